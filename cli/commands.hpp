@@ -1,0 +1,10 @@
+#pragma once
+// Registration of the `rbcal` sub-commands; each lives in its own file.
+#include <CLI/CLI.hpp>
+
+namespace rbcal::cli {
+
+void add_couette_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
+
+}  // namespace rbcal::cli

@@ -1,0 +1,28 @@
+// rbcal: red blood cell deformability from rheometer curves. Thin front end over the
+// solver, surrogate and calibration libraries.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "rbcal/build_info.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rbcal: membrane shear elasticity G_s of red blood cells from rheometer curves"};
+  app.set_version_flag("--version", std::string("rbcal ") + rbcal::build_info::version + " (" +
+                                        rbcal::build_info::git_revision + ")");
+  app.require_subcommand(1);
+  rbcal::cli::add_couette_command(app);
+  rbcal::cli::add_bench_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "rbcal: error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
