@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solver/d3q19.hpp"
+#include "solver/simd.hpp"
 #include "solver/trt_collision.hpp"
 
 namespace rbcal::solver {
@@ -27,19 +28,6 @@ void equilibrium(double rho, double ux, double uy, double uz, double* feq) {
   }
 }
 
-// out[z] = src[(z - shift) mod nz] for shift in {-1, 0, 1}: streaming along z.
-void copy_shifted(const double* src, double* out, int nz, int shift) {
-  if (shift == 0) {
-    std::copy(src, src + nz, out);
-  } else if (shift == 1) {
-    out[0] = src[nz - 1];
-    std::copy(src, src + nz - 1, out + 1);
-  } else {
-    std::copy(src + 1, src + nz, out);
-    out[nz - 1] = src[0];
-  }
-}
-
 }  // namespace
 
 FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
@@ -47,8 +35,9 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
-  f_.resize(Q * nodes_);
-  f_next_.resize(Q * nodes_);
+  stride_ = (nodes_ + simd::width - 1) / simd::width * simd::width;
+  f_.resize(Q * stride_);
+  f_next_.resize(Q * stride_);
   viscosity_.assign(nodes_, config.viscosity);
   force_.assign(3 * nodes_, 0.0);
   for (std::size_t n = 0; n < nodes_; ++n) set_equilibrium(n, 1.0, 0.0, 0.0, 0.0);
@@ -62,63 +51,113 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
   double feq[Q];
   equilibrium(rho, ux + force(0)[node] * half_over_rho, uy + force(1)[node] * half_over_rho,
               uz + force(2)[node] * half_over_rho, feq);
-  for (int q = 0; q < Q; ++q) f_[q * nodes_ + node] = feq[q];
+  for (int q = 0; q < Q; ++q) f_[q * stride_ + node] = feq[q];
 }
 
-void FluidLattice::gather_row(int x, int y, double* row_buffer) const {
+void FluidLattice::update_row(int x, int y) {
+  using simd::vdouble;
+  constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
   const bool walls = config_.y_boundary == WallNormalBoundary::MovingWalls;
+  const std::size_t row = index(x, y, 0);
+
+  // Node z of this row pulls population q from src[q][z - shift[q]] + add[q].
+  const double* src[Q];
+  int shift[Q];
+  double add[Q];
+  double* out[Q];
   for (int q = 0; q < Q; ++q) {
-    double* out = row_buffer + static_cast<std::size_t>(q) * nz;
+    out[q] = f_next_.data() + q * stride_ + row;
     int ys = y - c[q][1];
     if (walls && (ys < 0 || ys >= ny)) {
       // Half-way bounce-back with the moving-wall term (Ladd 1994):
       // f_q(x, t+1) = f*_qbar(x, t) + 6 w_q (c_q . u_wall).
       const double u_wall = ys < 0 ? config_.wall_velocity_bottom : config_.wall_velocity_top;
-      const double add = 6.0 * w[q] * c[q][2] * u_wall;
-      const double* src = f_.data() + opposite(q) * nodes_ + index(x, y, 0);
-      for (int z = 0; z < nz; ++z) out[z] = src[z] + add;
+      src[q] = f_.data() + opposite(q) * stride_ + row;
+      shift[q] = 0;
+      add[q] = 6.0 * w[q] * c[q][2] * u_wall;
     } else {
       ys = (ys + ny) % ny;
       const int xs = (x - c[q][0] + nx) % nx;
-      copy_shifted(f_.data() + q * nodes_ + index(xs, ys, 0), out, nz, c[q][2]);
+      src[q] = f_.data() + q * stride_ + index(xs, ys, 0);
+      shift[q] = c[q][2];
+      add[q] = 0.0;
     }
   }
-}
+  const double* in[Q];
+  for (int q = 0; q < Q; ++q) in[q] = src[q] - shift[q];
 
-void FluidLattice::collide_row(int x, int y, const double* row_buffer) {
-  const int nz = config_.nz;
-  const double magic = config_.magic;
-  const std::size_t row = index(x, y, 0);
-  const std::size_t n = nodes_;
-  const double* __restrict nu = viscosity_.data() + row;
-  const double* __restrict fx = force_.data() + row;
-  const double* __restrict fy = force_.data() + n + row;
-  const double* __restrict fz = force_.data() + 2 * n + row;
-  double* __restrict dst = f_next_.data() + row;
-#pragma omp simd
-  for (int z = 0; z < nz; ++z) {
-    double f[Q];
-    for (int q = 0; q < Q; ++q) f[q] = row_buffer[static_cast<std::size_t>(q) * nz + z];
-    collide_trt(f, nu[z], magic, fx[z], fy[z], fz[z]);
-    for (int q = 0; q < Q; ++q) dst[q * n + z] = f[q];
+  const double* nu = viscosity_.data() + row;
+  const double* fx = force_.data() + row;
+  const double* fy = force_.data() + nodes_ + row;
+  const double* fz = force_.data() + 2 * nodes_ + row;
+  // stride_ is a multiple of W, so all q streams share the row's alignment.
+  const bool streaming_stores = simd::is_aligned(out[0]);
+
+  for (int z0 = 0; z0 < nz; z0 += W) {
+    vdouble f[Q], nu_v, fx_v, fy_v, fz_v;
+    const bool first = z0 == 0, last = z0 + W >= nz;
+    if (!(first && last) && z0 + W <= nz) {
+      // A full chunk; in the first and last ones, the populations streaming across the
+      // periodic z boundary take one lane from the other end of the row.
+      for (int q = 0; q < Q; ++q) {
+        if (first && shift[q] == 1) {
+          alignas(simd::bytes) double lanes[W];
+          lanes[0] = src[q][nz - 1];
+          std::copy(src[q], src[q] + W - 1, lanes + 1);
+          f[q] = simd::load(lanes) + add[q];
+        } else if (last && shift[q] == -1) {
+          alignas(simd::bytes) double lanes[W];
+          std::copy(src[q] + z0 + 1, src[q] + z0 + W, lanes);
+          lanes[W - 1] = src[q][0];
+          f[q] = simd::load(lanes) + add[q];
+        } else {
+          f[q] = simd::load(in[q] + z0) + add[q];
+        }
+      }
+      nu_v = simd::load(nu + z0);
+      fx_v = simd::load(fx + z0);
+      fy_v = simd::load(fy + z0);
+      fz_v = simd::load(fz + z0);
+    } else {
+      // Rows shorter than two chunks, or a partial last chunk: lane by lane.
+      for (int l = 0; l < W; ++l) {
+        const int z = std::min(z0 + l, nz - 1);  // lanes past the end repeat the last node
+        for (int q = 0; q < Q; ++q) {
+          int zs = z - shift[q];
+          zs = zs < 0 ? zs + nz : (zs >= nz ? zs - nz : zs);
+          f[q][l] = src[q][zs] + add[q];
+        }
+        nu_v[l] = nu[z];
+        fx_v[l] = fx[z];
+        fy_v[l] = fy[z];
+        fz_v[l] = fz[z];
+      }
+    }
+    collide_trt(f, nu_v, config_.magic, fx_v, fy_v, fz_v);
+    if (z0 + W <= nz) {
+      if (streaming_stores) {
+        for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
+      } else {
+        for (int q = 0; q < Q; ++q) simd::store(out[q] + z0, f[q]);
+      }
+    } else {
+      for (int q = 0; q < Q; ++q)
+        for (int l = 0; z0 + l < nz; ++l) out[q][z0 + l] = f[q][l];
+    }
   }
 }
 
 void FluidLattice::step() {
-  const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
+  const int nx = config_.nx, ny = config_.ny;
   // Below a few thousand nodes a thread team costs more than it saves.
   const bool threaded = nodes_ >= 4096;
 #pragma omp parallel if (threaded)
   {
-    std::vector<double> row_buffer(static_cast<std::size_t>(Q) * nz);
-#pragma omp for collapse(2) schedule(static)
-    for (int x = 0; x < nx; ++x) {
-      for (int y = 0; y < ny; ++y) {
-        gather_row(x, y, row_buffer.data());
-        collide_row(x, y, row_buffer.data());
-      }
-    }
+#pragma omp for collapse(2) schedule(static) nowait
+    for (int x = 0; x < nx; ++x)
+      for (int y = 0; y < ny; ++y) update_row(x, y);
+    simd::store_fence();  // streaming stores visible before the barrier
   }
   f_.swap(f_next_);
   ++steps_;
@@ -127,7 +166,7 @@ void FluidLattice::step() {
 NodeMoments FluidLattice::moments(std::size_t node) const {
   double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
   for (int q = 0; q < Q; ++q) {
-    const double fq = f_[q * nodes_ + node];
+    const double fq = f_[q * stride_ + node];
     rho += fq;
     jx += fq * c[q][0];
     jy += fq * c[q][1];
@@ -139,9 +178,12 @@ NodeMoments FluidLattice::moments(std::size_t node) const {
 
 double FluidLattice::total_mass() const {
   double mass = 0.0;
-  const std::size_t total = f_.size();
+  for (int q = 0; q < Q; ++q) {
+    const double* fq = f_.data() + q * stride_;
+    const long n = static_cast<long>(nodes_);
 #pragma omp parallel for reduction(+ : mass) schedule(static)
-  for (std::size_t i = 0; i < total; ++i) mass += f_[i];
+    for (long i = 0; i < n; ++i) mass += fq[i];
+  }
   return mass;
 }
 
@@ -156,7 +198,7 @@ WallTraction FluidLattice::wall_traction() const {
       const double correction = 6.0 * w[q] * c[q][2] * u_wall;
       double exchanged = 0.0;
       for (int x = 0; x < config_.nx; ++x) {
-        const double* fq = f_.data() + q * nodes_ + index(x, y, 0);
+        const double* fq = f_.data() + q * stride_ + index(x, y, 0);
         for (int z = 0; z < config_.nz; ++z) exchanged += 2.0 * fq[z] - correction;
       }
       for (int d = 0; d < 3; ++d) sum[d] += c[q][d] * exchanged;

@@ -5,7 +5,8 @@
 // viscosity and per-node body force (Guo). All quantities in lattice units:
 // dx = dt = 1, reference density 1.
 //
-// Layout: structure of arrays, population q of node n at q * node_count() + n, nodes
+// Layout: structure of arrays, population q of node n at q * stride + n (stride =
+// node count rounded up to the SIMD width), nodes
 // ordered x-major, z fastest (n = (x * ny + y) * nz + z). One step is a fused
 // pull-stream + TRT collision between two population arrays; the stored populations
 // are always post-collision.
@@ -72,16 +73,17 @@ class FluidLattice {
   void step();
 
   NodeMoments moments(std::size_t node) const;
-  double population(int q, std::size_t node) const { return f_[q * nodes_ + node]; }
+  double population(int q, std::size_t node) const { return f_[q * stride_ + node]; }
   double total_mass() const;
   WallTraction wall_traction() const;
 
  private:
-  void gather_row(int x, int y, double* row_buffer) const;
-  void collide_row(int x, int y, const double* row_buffer);
+  // Pull-stream and collide the nodes (x, y, 0..nz-1) into the next population array.
+  void update_row(int x, int y);
 
   FluidConfig config_;
   std::size_t nodes_;
+  std::size_t stride_;  // distance between population arrays: nodes_ rounded up to the SIMD width
   std::int64_t steps_ = 0;
   AlignedVector<double> f_;
   AlignedVector<double> f_next_;

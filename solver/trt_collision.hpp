@@ -1,5 +1,5 @@
 #pragma once
-// Two-relaxation-time (TRT) collision with Guo forcing for one D3Q19 node.
+// Two-relaxation-time (TRT) collision with Guo forcing for D3Q19 nodes.
 //
 // Symmetric (even) moments relax with omega+ = 1/tau+, tau+ = 3 nu + 1/2, which sets
 // the kinematic viscosity nu; antisymmetric (odd) moments relax with omega- chosen so
@@ -9,60 +9,90 @@
 // S_q = w_q [3 (c_q - u).F + 9 (c_q.u)(c_q.F)] is split into its even and odd parts,
 // each scaled by (1 - omega/2) of its own relaxation rate; the velocity is
 // u = (sum_q f_q c_q + F/2) / rho. All quantities in lattice units.
+//
+// Written once for a scalar node (T = double) and for a vector of nodes
+// (T = simd::vdouble); the lattice velocities are template parameters so that the
+// zero components cost nothing.
+#include <utility>
+
 #include "solver/d3q19.hpp"
 
 namespace rbcal::solver {
 
-struct TrtRates {
-  double omega_plus;
-  double omega_minus;
-};
+namespace trt_detail {
 
-// Relaxation rates for kinematic viscosity nu (lattice units) and magic parameter Lambda.
-inline TrtRates trt_rates(double nu, double magic) {
-  const double tau_plus = 3.0 * nu + 0.5;
-  const double tau_minus = 0.5 + magic / (3.0 * nu);
-  return {1.0 / tau_plus, 1.0 / tau_minus};
+using d3q19::c;
+
+// s * v for a lattice-velocity component s in {-1, 0, 1}, added to sum.
+template <int s, class T>
+inline T accumulate(T sum, T v) {
+  if constexpr (s == 1) return sum + v;
+  else if constexpr (s == -1) return sum - v;
+  else return sum;
 }
 
-// Collides the populations f of one node in place.
-inline void collide_trt(double* f, double nu, double magic, double fx, double fy, double fz) {
+// c_q . (x, y, z) without multiplications.
+template <int q, class T>
+inline T dot_c(T x, T y, T z) {
+  T r = T{};
+  r = accumulate<c[q][0]>(r, x);
+  r = accumulate<c[q][1]>(r, y);
+  r = accumulate<c[q][2]>(r, z);
+  return r;
+}
+
+template <int d, class T, int... q>
+inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
+  T sum = T{};
+  ((sum = accumulate<c[q][d]>(sum, f[q])), ...);
+  return sum;
+}
+
+}  // namespace trt_detail
+
+// Collides the populations f[0..18] of one node (or one vector of nodes) in place.
+template <class T>
+inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz) {
   using namespace d3q19;
-  double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
-  for (int q = 0; q < Q; ++q) {
-    rho += f[q];
-    jx += f[q] * c[q][0];
-    jy += f[q] * c[q][1];
-    jz += f[q] * c[q][2];
-  }
-  const double inv_rho = 1.0 / rho;
-  const double ux = (jx + 0.5 * fx) * inv_rho;
-  const double uy = (jy + 0.5 * fy) * inv_rho;
-  const double uz = (jz + 0.5 * fz) * inv_rho;
-  const double usq = ux * ux + uy * uy + uz * uz;
-  const double uf = ux * fx + uy * fy + uz * fz;
+  using namespace trt_detail;
+  constexpr auto all = std::make_integer_sequence<int, Q>{};
 
-  const TrtRates r = trt_rates(nu, magic);
-  const double force_plus = 1.0 - 0.5 * r.omega_plus;
-  const double force_minus = 1.0 - 0.5 * r.omega_minus;
+  T rho = f[0];
+  for (int q = 1; q < Q; ++q) rho = rho + f[q];
+  const T inv_rho = 1.0 / rho;
+  const T ux = (first_moment<0>(f, all) + 0.5 * fx) * inv_rho;
+  const T uy = (first_moment<1>(f, all) + 0.5 * fy) * inv_rho;
+  const T uz = (first_moment<2>(f, all) + 0.5 * fz) * inv_rho;
+  const T usq = ux * ux + uy * uy + uz * uz;
+  const T uf = ux * fx + uy * fy + uz * fz;
 
-  f[0] += -r.omega_plus * (f[0] - w[0] * rho * (1.0 - 1.5 * usq)) - force_plus * w[0] * 3.0 * uf;
+  // tau+ = 3 nu + 1/2, tau- = 1/2 + Lambda / (3 nu).
+  const T omega_plus = 1.0 / (3.0 * nu + 0.5);
+  const T omega_minus = 1.0 / (0.5 + magic / (3.0 * nu));
+  const T force_plus = 1.0 - 0.5 * omega_plus;
+  const T force_minus = 1.0 - 0.5 * omega_minus;
+  const T base = rho * (1.0 - 1.5 * usq);  // rho (1 - 3/2 u^2)
 
-  for (int q = 1; q < Q; q += 2) {
-    const int qb = q + 1;  // opposite direction (see d3q19.hpp ordering)
-    const double cu = c[q][0] * ux + c[q][1] * uy + c[q][2] * uz;
-    const double cf = c[q][0] * fx + c[q][1] * fy + c[q][2] * fz;
-    const double eq_plus = w[q] * rho * (1.0 + 4.5 * cu * cu - 1.5 * usq);
-    const double eq_minus = w[q] * rho * 3.0 * cu;
-    const double src_plus = w[q] * (9.0 * cu * cf - 3.0 * uf);
-    const double src_minus = w[q] * 3.0 * cf;
-    const double f_plus = 0.5 * (f[q] + f[qb]);
-    const double f_minus = 0.5 * (f[q] - f[qb]);
-    const double d_plus = -r.omega_plus * (f_plus - eq_plus) + force_plus * src_plus;
-    const double d_minus = -r.omega_minus * (f_minus - eq_minus) + force_minus * src_minus;
-    f[q] += d_plus + d_minus;
-    f[qb] += d_plus - d_minus;
-  }
+  f[0] = f[0] - omega_plus * (f[0] - w[0] * base) - force_plus * (w[0] * 3.0) * uf;
+
+  auto pair = [&]<int q>(std::integral_constant<int, q>) {
+    constexpr int qb = q + 1;  // opposite direction (see d3q19.hpp ordering)
+    const T cu = dot_c<q>(ux, uy, uz);
+    const T cf = dot_c<q>(fx, fy, fz);
+    const T eq_plus = w[q] * (base + (4.5 * rho) * cu * cu);
+    const T eq_minus = (w[q] * 3.0) * rho * cu;
+    const T src_plus = w[q] * (9.0 * cu * cf - 3.0 * uf);
+    const T src_minus = (w[q] * 3.0) * cf;
+    const T f_plus = 0.5 * (f[q] + f[qb]);
+    const T f_minus = 0.5 * (f[q] - f[qb]);
+    const T d_plus = force_plus * src_plus - omega_plus * (f_plus - eq_plus);
+    const T d_minus = force_minus * src_minus - omega_minus * (f_minus - eq_minus);
+    f[q] = f[q] + (d_plus + d_minus);
+    f[qb] = f[qb] + (d_plus - d_minus);
+  };
+  [&]<int... p>(std::integer_sequence<int, p...>) {
+    (pair(std::integral_constant<int, 2 * p + 1>{}), ...);
+  }(std::make_integer_sequence<int, (Q - 1) / 2>{});
 }
 
 }  // namespace rbcal::solver

@@ -1,0 +1,57 @@
+#pragma once
+// A fixed-width vector of doubles (GCC/Clang vector extension) sized to the widest
+// instruction set the build targets, with unaligned loads and non-temporal stores.
+// The fluid update is memory bound; streaming stores skip the read-for-ownership of the
+// destination lines, which would otherwise add half as much traffic again.
+#include <cstddef>
+#include <cstring>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace rbcal::solver::simd {
+
+#if defined(__AVX512F__)
+inline constexpr int width = 8;
+#elif defined(__AVX__)
+inline constexpr int width = 4;
+#else
+inline constexpr int width = 2;
+#endif
+
+using vdouble = double __attribute__((vector_size(width * sizeof(double))));
+inline constexpr std::size_t bytes = sizeof(vdouble);
+
+inline vdouble load(const double* p) {
+  vdouble v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+inline vdouble broadcast(double s) { return vdouble{} + s; }
+
+inline void store(double* p, vdouble v) { std::memcpy(p, &v, sizeof v); }
+
+// p must be aligned to `bytes`. Call store_fence() before other threads read the data.
+inline void store_streaming(double* p, vdouble v) {
+#if defined(__AVX512F__)
+  _mm512_stream_pd(p, reinterpret_cast<__m512d>(v));
+#elif defined(__AVX__)
+  _mm256_stream_pd(p, reinterpret_cast<__m256d>(v));
+#elif defined(__SSE2__)
+  _mm_stream_pd(p, reinterpret_cast<__m128d>(v));
+#else
+  store(p, v);
+#endif
+}
+
+inline void store_fence() {
+#if defined(__SSE2__)
+  _mm_sfence();
+#endif
+}
+
+inline bool is_aligned(const double* p) { return reinterpret_cast<std::size_t>(p) % bytes == 0; }
+
+}  // namespace rbcal::solver::simd
