@@ -1,19 +1,29 @@
 #pragma once
-// STREAM-triad memory bandwidth, a[i] = b[i] + s c[i], on all OpenMP threads. Bytes
-// counted as in STREAM (McCalpin): 3 x 8 per element, write-allocate traffic not
-// counted, so that it compares like for like with the lattice-update byte count.
+// STREAM-triad memory bandwidth, a[i] = b[i] + s c[i], on all OpenMP threads. Bytes are
+// counted as STREAM (McCalpin) counts them, 3 x 8 per element. With ordinary stores
+// the hardware also reads each line of a before writing it (write-allocate), traffic
+// STREAM does not count; with streaming (non-temporal) stores it does not.
 #include <cstddef>
-#include <vector>
 
 namespace rbcal::bench {
 
-struct TriadResult {
-  std::size_t elements = 0;
-  int threads = 0;
-  std::vector<double> seconds;    // one per repetition
-  double median_bytes_per_s = 0;  // 24 * elements / median(seconds)
-};
+class StreamTriad {
+ public:
+  explicit StreamTriad(std::size_t elements);
+  ~StreamTriad();
+  StreamTriad(const StreamTriad&) = delete;
+  StreamTriad& operator=(const StreamTriad&) = delete;
 
-TriadResult measure_stream_triad(std::size_t elements, int repetitions);
+  // Seconds for one pass of the triad over the arrays.
+  double run_once(bool streaming_stores);
+  std::size_t elements() const { return n_; }
+  double bytes_counted() const { return 24.0 * static_cast<double>(n_); }
+
+ private:
+  std::size_t n_;
+  double* a_;
+  double* b_;
+  double* c_;
+};
 
 }  // namespace rbcal::bench
