@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "bench/timing.hpp"
-#include "solver/fluid_lattice.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 
 namespace rbcal::bench {
 

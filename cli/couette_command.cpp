@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "solver/couette_flow.hpp"
+#include "solver/fluid/couette_flow.hpp"
 #include "solver/lattice_units.hpp"
 
 namespace rbcal::cli {

@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "solver/d3q19.hpp"
-#include "solver/fluid_lattice.hpp"
+#include "solver/fluid/d3q19.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 
 using namespace rbcal::solver;
 

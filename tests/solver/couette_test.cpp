@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "solver/couette_flow.hpp"
+#include "solver/fluid/couette_flow.hpp"
 
 using namespace rbcal::solver;
 

@@ -3,7 +3,7 @@
 // Europhys. Lett. 17 (1992) 479).
 #include <gtest/gtest.h>
 
-#include "solver/d3q19.hpp"
+#include "solver/fluid/d3q19.hpp"
 
 using namespace rbcal::solver::d3q19;
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "solver/couette_flow.hpp"
+#include "solver/fluid/couette_flow.hpp"
 
 using namespace rbcal::solver;
 

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <numbers>
 
-#include "solver/fluid_lattice.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 
 using namespace rbcal::solver;
 

@@ -15,7 +15,7 @@
 // zero components cost nothing.
 #include <utility>
 
-#include "solver/d3q19.hpp"
+#include "solver/fluid/d3q19.hpp"
 
 namespace rbcal::solver {
 

@@ -1,4 +1,4 @@
-#include "solver/couette_flow.hpp"
+#include "solver/fluid/couette_flow.hpp"
 
 #include <algorithm>
 #include <cmath>

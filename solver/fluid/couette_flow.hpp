@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "solver/fluid_lattice.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 
 namespace rbcal::solver {
 

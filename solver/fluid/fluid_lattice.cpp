@@ -1,13 +1,13 @@
-#include "solver/fluid_lattice.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "solver/d3q19.hpp"
+#include "solver/fluid/d3q19.hpp"
 #include "solver/simd.hpp"
-#include "solver/trt_collision.hpp"
+#include "solver/fluid/trt_collision.hpp"
 
 namespace rbcal::solver {
 
