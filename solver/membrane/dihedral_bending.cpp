@@ -1,0 +1,64 @@
+#include "solver/membrane/dihedral_bending.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rbcal::solver {
+
+double DihedralBending::hinge_constant(double bending_modulus) { return 2.0 * bending_modulus / std::sqrt(3.0); }
+
+double DihedralBending::hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 n1 = (b - a).cross(c - a);  // triangle (a, b, c)
+  const Vec3 n2 = (a - b).cross(d - b);  // triangle (b, a, d)
+  const Vec3 e = b - a;
+  // sin(theta) |n1||n2| = (n1 x n2) . e/|e|, cos(theta) |n1||n2| = n1 . n2
+  return std::atan2(n1.cross(n2).dot(e) / e.norm(), n1.dot(n2));
+}
+
+DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_modulus, SpontaneousShape shape)
+    : k_d_(hinge_constant(bending_modulus)), hinges_(build_hinges(reference)) {
+  if (!(bending_modulus >= 0.0)) throw std::invalid_argument("bending: modulus must be >= 0");
+  theta0_.reserve(hinges_.size());
+  for (const Hinge& h : hinges_) {
+    const auto& v = reference.vertices;
+    theta0_.push_back(shape == SpontaneousShape::Reference ? hinge_angle(v[h.a], v[h.b], v[h.c], v[h.d]) : 0.0);
+  }
+}
+
+double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& forces) const {
+  double energy = 0.0;
+  for (std::size_t i = 0; i < hinges_.size(); ++i) {
+    const Hinge& h = hinges_[i];
+    const Vec3 &a = x[h.a], &b = x[h.b], &c = x[h.c], &d = x[h.d];
+    const Vec3 e = b - a;
+    const Vec3 n1 = e.cross(c - a);
+    const Vec3 n2 = (a - b).cross(d - b);
+    const double len = e.norm();
+    const double n1sq = n1.squaredNorm(), n2sq = n2.squaredNorm();
+    const double theta = std::atan2(n1.cross(n2).dot(e) / len, n1.dot(n2));
+    const double delta = theta - theta0_[i];
+    energy += k_d_ * (1.0 - std::cos(delta));
+
+    // Gradient of the dihedral angle: the wing vertices move along their triangle
+    // normals at rate 1/height; the edge vertices take the rest so that the sum and
+    // the torque of the gradient vanish.
+    const Vec3 gc = -(len / n1sq) * n1;
+    const Vec3 gd = -(len / n2sq) * n2;
+    const double inv_len2 = 1.0 / (len * len);
+    const Vec3 ga = ((c - b).dot(e) * inv_len2) * gc + ((d - b).dot(e) * inv_len2) * gd;
+    const Vec3 gb = -((c - a).dot(e) * inv_len2) * gc - ((d - a).dot(e) * inv_len2) * gd;
+    const double dE = k_d_ * std::sin(delta);
+    forces[h.a] -= dE * ga;
+    forces[h.b] -= dE * gb;
+    forces[h.c] -= dE * gc;
+    forces[h.d] -= dE * gd;
+  }
+  return energy;
+}
+
+double DihedralBending::energy(const std::vector<Vec3>& x) const {
+  std::vector<Vec3> scratch(x.size(), Vec3::Zero());
+  return add_forces(x, scratch);
+}
+
+}  // namespace rbcal::solver

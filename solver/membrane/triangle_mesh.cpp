@@ -1,0 +1,60 @@
+#include "solver/membrane/triangle_mesh.hpp"
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rbcal::solver {
+
+double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
+  double six_v = 0.0;
+  for (const Triangle& t : triangles) six_v += x[t[0]].dot(x[t[1]].cross(x[t[2]]));
+  return six_v / 6.0;
+}
+
+double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
+  double twice_a = 0.0;
+  for (const Triangle& t : triangles) twice_a += (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+  return 0.5 * twice_a;
+}
+
+Vec3 vertex_centroid(const std::vector<Vec3>& x) {
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& v : x) sum += v;
+  return sum / static_cast<double>(x.size());
+}
+
+std::vector<Hinge> build_hinges(const TriangleMesh& mesh) {
+  // Directed edge (from, to) -> the vertex opposite it in its triangle.
+  std::map<std::pair<int, int>, int> opposite_of;
+  const int nv = static_cast<int>(mesh.vertices.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int from = tri[k], to = tri[(k + 1) % 3], other = tri[(k + 2) % 3];
+      if (from < 0 || from >= nv || to < 0 || to >= nv || other < 0 || other >= nv)
+        throw std::invalid_argument("mesh: triangle " + std::to_string(t) + " names a missing vertex");
+      if (!opposite_of.emplace(std::make_pair(from, to), other).second)
+        throw std::invalid_argument("mesh: directed edge " + std::to_string(from) + "-" + std::to_string(to) +
+                                    " appears twice (inconsistent orientation or non-manifold)");
+    }
+  }
+  std::vector<Hinge> hinges;
+  for (const auto& [edge, c] : opposite_of) {
+    const auto [a, b] = edge;
+    if (a > b) continue;  // each undirected edge once
+    auto twin = opposite_of.find({b, a});
+    if (twin == opposite_of.end())
+      throw std::invalid_argument("mesh: edge " + std::to_string(a) + "-" + std::to_string(b) +
+                                  " has one triangle only (surface not closed)");
+    hinges.push_back({a, b, c, twin->second});
+  }
+  for (const auto& [edge, c] : opposite_of)
+    if (edge.first > edge.second && !opposite_of.count({edge.second, edge.first}))
+      throw std::invalid_argument("mesh: edge " + std::to_string(edge.first) + "-" +
+                                  std::to_string(edge.second) + " has one triangle only (surface not closed)");
+  return hinges;
+}
+
+}  // namespace rbcal::solver

@@ -1,0 +1,35 @@
+#pragma once
+// A closed triangulated surface: vertex positions and triangles whose vertices run
+// counter-clockwise seen from outside (so (x1 - x0) x (x2 - x0) points outwards).
+// Lengths in whatever unit the caller uses (metres, cell radii or lattice units).
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <vector>
+
+namespace rbcal::solver {
+
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<int, 3>;
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> triangles;
+};
+
+// An interior edge a-b with its two triangles (a, b, c) and (b, a, d): the hinge that
+// the bending energy acts on.
+struct Hinge {
+  int a, b, c, d;
+};
+
+// Enclosed volume (divergence theorem), positive for outward orientation.
+double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+Vec3 vertex_centroid(const std::vector<Vec3>& x);
+
+// Every edge's hinge; throws std::invalid_argument unless the mesh is a closed, consistently
+// oriented two-manifold (each edge shared by exactly two triangles in opposite directions).
+std::vector<Hinge> build_hinges(const TriangleMesh& mesh);
+
+}  // namespace rbcal::solver
