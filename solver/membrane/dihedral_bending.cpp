@@ -5,7 +5,10 @@
 
 namespace rbcal::solver {
 
-double DihedralBending::hinge_constant(double bending_modulus) { return 2.0 * bending_modulus / std::sqrt(3.0); }
+double DihedralBending::hinge_constant(double bending_modulus, BendingConversion conversion) {
+  return conversion == BendingConversion::Sphere ? 2.0 * std::sqrt(3.0) * bending_modulus
+                                                 : 2.0 * bending_modulus / std::sqrt(3.0);
+}
 
 double DihedralBending::hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const Vec3 n1 = (b - a).cross(c - a);  // triangle (a, b, c)
@@ -15,8 +18,9 @@ double DihedralBending::hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c,
   return std::atan2(n1.cross(n2).dot(e) / e.norm(), n1.dot(n2));
 }
 
-DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_modulus, SpontaneousShape shape)
-    : k_d_(hinge_constant(bending_modulus)), hinges_(build_hinges(reference)) {
+DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_modulus, SpontaneousShape shape,
+                                 BendingConversion conversion)
+    : k_d_(hinge_constant(bending_modulus, conversion)), hinges_(build_hinges(reference)) {
   if (!(bending_modulus >= 0.0)) throw std::invalid_argument("bending: modulus must be >= 0");
   theta0_.reserve(hinges_.size());
   for (const Hinge& h : hinges_) {

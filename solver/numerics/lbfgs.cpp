@@ -53,9 +53,14 @@ LbfgsResult minimize_lbfgs(const Objective& f, Eigen::VectorXd& x, const LbfgsSe
     for (int trial = 0; trial < 60; ++trial) {
       x_new = x + step * d;
       value_new = f(x_new, g_new);
-      if (!std::isfinite(value_new) || value_new > value + c1 * step * slope) {
+      // Armijo decrease, or near the minimum where round-off hides the decrease, the
+      // approximate Wolfe test of Hager & Zhang (SIAM J. Optim. 16 (2005) 170).
+      const double slope_new = g_new.dot(d);
+      const bool decrease = value_new <= value + c1 * step * slope ||
+                            (value_new <= value + 1e-12 * std::abs(value) && slope_new <= (2.0 * c1 - 1.0) * slope);
+      if (!std::isfinite(value_new) || !decrease) {
         hi = step;
-      } else if (g_new.dot(d) < c2 * slope) {
+      } else if (slope_new < c2 * slope) {
         lo = step;
       } else {
         accepted = true;
