@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   rbcal::cli::add_couette_command(app);
   rbcal::cli::add_bench_command(app);
+  rbcal::cli::add_stretch_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,225 @@
+// `rbcal stretch`: optical-tweezers stretching of one red blood cell in static
+// equilibrium; axial and transverse diameters versus force, optionally compared with
+// (and G_s fitted to) measured diameters.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "rbcal/build_info.hpp"
+#include "solver/membrane/cell_stretching.hpp"
+
+namespace rbcal::cli {
+
+namespace {
+
+struct StretchOptions {
+  double shear_modulus = 4e-6;  // N/m
+  std::vector<double> forces_pn;
+  int triangles = 1280;
+  double radius = 3.91e-6;  // m
+  std::string profile = "evans-fung";
+  std::string law = "skalak";
+  double skalak_c = 100.0;
+  double bending_modulus = 5e-19;  // J
+  double contact_fraction = 0.05;
+  std::string compare_path = std::string(RBCAL_DATA_DIR) + "/reference/mills_2004_optical_tweezers.csv";
+  bool no_compare = false;
+  bool fit = false;
+  std::string json_path;
+};
+
+struct Measured {
+  std::vector<double> force_pn, axial_um, transverse_um;
+};
+
+// CSV with '#' comment lines and the header force_pN,axial_um,transverse_um.
+Measured read_measured(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  Measured m;
+  std::string line;
+  int line_no = 0;
+  bool header_seen = false;
+  const char* fields[] = {"force_pN", "axial_um", "transverse_um"};
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty() || line[0] == '#') continue;
+    if (!header_seen) {
+      if (line != "force_pN,axial_um,transverse_um")
+        throw std::runtime_error(path + ":" + std::to_string(line_no) +
+                                 ": header must be force_pN,axial_um,transverse_um");
+      header_seen = true;
+      continue;
+    }
+    std::stringstream ss(line);
+    std::string cell;
+    double values[3];
+    for (int k = 0; k < 3; ++k) {
+      if (!std::getline(ss, cell, ','))
+        throw std::runtime_error(path + ":" + std::to_string(line_no) + ": missing field " + fields[k]);
+      std::size_t used = 0;
+      try {
+        values[k] = std::stod(cell, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != cell.size() || !std::isfinite(values[k]) || values[k] < 0.0)
+        throw std::runtime_error(path + ":" + std::to_string(line_no) + ": field " + fields[k] +
+                                 " is not a non-negative number: '" + cell + "'");
+    }
+    m.force_pn.push_back(values[0]);
+    m.axial_um.push_back(values[1]);
+    m.transverse_um.push_back(values[2]);
+  }
+  if (m.force_pn.empty()) throw std::runtime_error(path + ": no data rows");
+  return m;
+}
+
+solver::StretchSettings settings_for(const StretchOptions& o, double shear_modulus) {
+  solver::StretchSettings s;
+  s.triangles = o.triangles;
+  s.radius = o.radius;
+  s.profile = solver::biconcave_profile_from_string(o.profile);
+  s.material = {solver::membrane_law_from_string(o.law), shear_modulus, o.skalak_c};
+  s.bending_modulus = o.bending_modulus;
+  s.contact_fraction = o.contact_fraction;
+  return s;
+}
+
+std::vector<solver::StretchPoint> run(const StretchOptions& o, double shear_modulus, const std::vector<double>& forces_pn) {
+  std::vector<double> forces;
+  for (double f : forces_pn) forces.push_back(f * 1e-12);
+  return solver::stretch_cell(settings_for(o, shear_modulus), forces);
+}
+
+// Root-mean-square difference of both diameters [um] from the measurements.
+double rms_misfit(const std::vector<solver::StretchPoint>& pts, const Measured& m) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double da = pts[i].axial_diameter * 1e6 - m.axial_um[i];
+    const double dt = pts[i].transverse_diameter * 1e6 - m.transverse_um[i];
+    sum += da * da + dt * dt;
+  }
+  return std::sqrt(sum / (2.0 * pts.size()));
+}
+
+void run_stretch(StretchOptions o) {
+  if (!(o.shear_modulus > 0.0)) throw std::invalid_argument("--shear-modulus must be positive");
+  Measured measured;
+  const bool compare = !o.no_compare;
+  if (compare) {
+    measured = read_measured(o.compare_path);
+    if (o.forces_pn.empty()) o.forces_pn = measured.force_pn;
+    else if (o.forces_pn != measured.force_pn)
+      throw std::invalid_argument("--forces must match the forces of " + o.compare_path + " (or use --no-compare)");
+  } else if (o.forces_pn.empty()) {
+    for (int f = 0; f <= 200; f += 25) o.forces_pn.push_back(f);
+  }
+  if (o.fit && !compare) throw std::invalid_argument("--fit needs measurements (drop --no-compare)");
+
+  double gs = o.shear_modulus;
+  if (o.fit) {
+    // Golden-section search of the misfit over ln G_s in [1, 30] uN/m.
+    double lo = std::log(1e-6), hi = std::log(3e-5);
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    auto misfit = [&](double ln_gs) {
+      const double r = rms_misfit(run(o, std::exp(ln_gs), o.forces_pn), measured);
+      std::printf("  fit: G_s = %6.3f uN/m  rms misfit %.3f um\n", std::exp(ln_gs) * 1e6, r);
+      std::fflush(stdout);
+      return r;
+    };
+    double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    double f1 = misfit(m1), f2 = misfit(m2);
+    while (hi - lo > 0.01) {  // 1 % in G_s
+      if (f1 < f2) {
+        hi = m2; m2 = m1; f2 = f1; m1 = hi - g * (hi - lo); f1 = misfit(m1);
+      } else {
+        lo = m1; m1 = m2; f1 = f2; m2 = lo + g * (hi - lo); f2 = misfit(m2);
+      }
+    }
+    gs = std::exp(0.5 * (lo + hi));
+  }
+
+  const std::vector<solver::StretchPoint> pts = run(o, gs, o.forces_pn);
+  std::printf("rbcal stretch: optical-tweezers stretching, static equilibrium\n");
+  std::printf("  G_s = %.3f uN/m, %s law (C = %g), k_c = %.3g J, %d triangles, radius %.3f um, %s profile,\n"
+              "  forces on %.0f %% of the vertices at each end\n",
+              gs * 1e6, o.law.c_str(), o.skalak_c, o.bending_modulus, o.triangles, o.radius * 1e6, o.profile.c_str(),
+              100.0 * o.contact_fraction);
+  std::printf("  %9s %10s %10s", "force_pN", "D_A_um", "D_T_um");
+  if (compare) std::printf(" %10s %10s", "meas_D_A", "meas_D_T");
+  std::printf(" %11s %10s %6s\n", "vol_error", "area_chg", "conv");
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::printf("  %9.1f %10.3f %10.3f", pts[i].force * 1e12, pts[i].axial_diameter * 1e6,
+                pts[i].transverse_diameter * 1e6);
+    if (compare) std::printf(" %10.3f %10.3f", measured.axial_um[i], measured.transverse_um[i]);
+    std::printf(" %11.2e %10.4f %6s\n", pts[i].volume_error, pts[i].area_change, pts[i].converged ? "yes" : "NO");
+  }
+  if (compare) std::printf("  rms misfit %.3f um against %s\n", rms_misfit(pts, measured), o.compare_path.c_str());
+
+  if (!o.json_path.empty()) {
+    nlohmann::json j;
+    j["rbcal_version"] = build_info::version;
+    j["git_revision"] = build_info::git_revision;
+    j["shear_modulus_N_per_m"] = gs;
+    j["law"] = o.law;
+    j["skalak_c"] = o.skalak_c;
+    j["bending_modulus_J"] = o.bending_modulus;
+    j["triangles"] = o.triangles;
+    j["radius_m"] = o.radius;
+    j["profile"] = o.profile;
+    j["contact_fraction"] = o.contact_fraction;
+    for (const auto& p : pts)
+      j["points"].push_back({{"force_N", p.force},
+                             {"axial_diameter_m", p.axial_diameter},
+                             {"transverse_diameter_m", p.transverse_diameter},
+                             {"volume_error", p.volume_error},
+                             {"area_change", p.area_change},
+                             {"converged", p.converged}});
+    if (compare) j["rms_misfit_um"] = rms_misfit(pts, measured);
+    std::ofstream out(o.json_path);
+    if (!out) throw std::runtime_error("cannot write " + o.json_path);
+    out << j.dump(2) << "\n";
+  }
+  for (const auto& p : pts)
+    if (!p.converged) throw std::runtime_error("equilibrium not reached at " + std::to_string(p.force * 1e12) + " pN");
+}
+
+}  // namespace
+
+void add_stretch_command(CLI::App& app) {
+  auto o = std::make_shared<StretchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "stretch",
+      "Optical-tweezers stretching of one RBC: axial/transverse diameters [um] vs force [pN] for a given G_s");
+  cmd->add_option("--shear-modulus", o->shear_modulus, "Membrane shear modulus G_s [N/m]")->capture_default_str();
+  cmd->add_option("--forces", o->forces_pn,
+                  "Stretching forces [pN], comma separated (default: the forces of the comparison data, or 0..200 "
+                  "in steps of 25 with --no-compare)")
+      ->delimiter(',');
+  cmd->add_option("--triangles", o->triangles, "Mesh triangles: 320, 1280 or 5120")->capture_default_str();
+  cmd->add_option("--radius", o->radius, "Cell major radius a [m] (Evans-Fung R0 = 3.91e-6)")->capture_default_str();
+  cmd->add_option("--profile", o->profile, "Biconcave profile: evans-fung (max thickness 0.656 a) or seed (a/2)")
+      ->capture_default_str();
+  cmd->add_option("--law", o->law, "Membrane law: skalak or neo-hookean")->capture_default_str();
+  cmd->add_option("--skalak-c", o->skalak_c, "Skalak area-dilation coefficient C (K_s = G_s (1 + 2C))")
+      ->capture_default_str();
+  cmd->add_option("--bending-modulus", o->bending_modulus, "Bending modulus k_c [J]")->capture_default_str();
+  cmd->add_option("--contact-fraction", o->contact_fraction, "Fraction of the vertices pulled at each end")
+      ->capture_default_str();
+  cmd->add_option("--compare", o->compare_path,
+                  "CSV of measured diameters (force_pN,axial_um,transverse_um; '#' comments)")
+      ->capture_default_str();
+  cmd->add_flag("--no-compare", o->no_compare, "Do not compare with measurements");
+  cmd->add_flag("--fit", o->fit, "Find the G_s that best reproduces the measured diameters (least squares)");
+  cmd->add_option("--json", o->json_path, "Also write the results as JSON to this file");
+  cmd->callback([o] { run_stretch(*o); });
+}
+
+}  // namespace rbcal::cli
