@@ -152,6 +152,10 @@ void run_stretch(StretchOptions o) {
               "  forces on %.0f %% of the vertices at each end\n",
               gs * 1e6, o.law.c_str(), o.skalak_c, o.bending_modulus, o.triangles, o.radius * 1e6, o.profile.c_str(),
               100.0 * o.contact_fraction);
+  const solver::MeshQuality q =
+      solver::mesh_quality(solver::make_biconcave_cell(o.triangles, 1.0, solver::biconcave_profile_from_string(o.profile)));
+  std::printf("  mesh: edges %.3f-%.3f a (spread %.2f), angles %.1f-%.1f deg\n", q.min_edge, q.max_edge, q.edge_spread,
+              q.min_angle_deg, q.max_angle_deg);
   std::printf("  %9s %10s %10s", "force_pN", "D_A_um", "D_T_um");
   if (compare) std::printf(" %10s %10s", "meas_D_A", "meas_D_T");
   std::printf(" %11s %10s %6s\n", "vol_error", "area_chg", "conv");
