@@ -1,0 +1,46 @@
+#pragma once
+// Immersed-boundary coupling between Lagrangian membrane nodes and the lattice
+// (Peskin, Acta Numerica 11 (2002) 479). Positions are in lattice units with node (i, j, k)
+// at (i, j, k); x and z wrap periodically; the walls bound y at -1/2 and ny - 1/2, and
+// kernel weights that would fall on missing nodes beyond a wall are dropped and the rest
+// renormalised along y, so that spreading still conserves force and interpolation still
+// reproduces constants near a wall.
+#include <array>
+#include <vector>
+
+#include "solver/coupling/peskin_kernel.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
+#include "solver/membrane/triangle_mesh.hpp"
+
+namespace rbcal::solver {
+
+// The kernel's footprint around one point: node offsets and weights per direction.
+struct KernelStencil {
+  int count = 0;  // support width
+  std::array<int, 4> x{}, y{}, z{};  // lattice indices (wrapped in x and z)
+  std::array<double, 4> wx{}, wy{}, wz{};
+};
+
+KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
+
+// Adds each node's force (lattice units, force per node) to the lattice force field.
+void spread_forces(KernelKind kernel, const std::vector<Vec3>& positions, const std::vector<Vec3>& forces,
+                   FluidLattice& fluid);
+
+// Fluid velocity interpolated at a point; u_node(i, j, k) supplies nodal velocities.
+template <class VelocityAt>
+Vec3 interpolate(const KernelStencil& s, VelocityAt&& u_node) {
+  Vec3 u = Vec3::Zero();
+  for (int a = 0; a < s.count; ++a)
+    for (int b = 0; b < s.count; ++b) {
+      const double wab = s.wx[a] * s.wy[b];
+      if (wab == 0.0) continue;
+      for (int c = 0; c < s.count; ++c) u += (wab * s.wz[c]) * u_node(s.x[a], s.y[b], s.z[c]);
+    }
+  return u;
+}
+
+// Velocity of the lattice fluid at a point (from the populations of the last step).
+Vec3 interpolate_velocity(KernelKind kernel, const FluidLattice& fluid, const Vec3& position);
+
+}  // namespace rbcal::solver

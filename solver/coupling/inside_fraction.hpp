@@ -1,0 +1,44 @@
+#pragma once
+// Fraction alpha of each lattice node's cell [i-1/2, i+1/2] x ... occupied by cell
+// interiors, from the membrane meshes, for the viscosity field
+// eta = (1 + (lambda - 1) alpha) eta0.
+//
+// Scan lines: each lattice column (i, j) is sampled by S x S lines parallel to z at
+// x = i + (s + 1/2)/S - 1/2, y = j + (t + 1/2)/S - 1/2 (S = 2). Each line is intersected
+// with every triangle of a closed mesh (projected point-in-triangle test, z from the
+// barycentric weights); the crossings, ordered along z and signed by the triangle's
+// orientation, bound the inside intervals (winding number). A node takes the length of
+// [k - 1/2, k + 1/2] that lies inside, averaged over its S^2 lines: a volume-of-fluid
+// fraction whose sum is a midpoint-rule volume integral on a grid of spacing dx / S.
+// Lines are offset by a fixed irrational fraction of a spacing so that no line passes
+// exactly through a mesh vertex or edge. Periodic in x and z: meshes must be given in
+// unwrapped coordinates (no jump across the box).
+#include <vector>
+
+#include "solver/membrane/triangle_mesh.hpp"
+
+namespace rbcal::solver {
+
+class InsideFraction {
+ public:
+  InsideFraction(int nx, int ny, int nz, int lines_per_spacing = 2);
+
+  // Recomputes alpha for all meshes (node positions in lattice units).
+  void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<Triangle>& triangles);
+
+  const std::vector<double>& alpha() const { return alpha_; }
+  // Nodes whose alpha changed in the last update (for incremental viscosity updates).
+  const std::vector<std::size_t>& touched() const { return touched_; }
+  double total() const;
+
+ private:
+  void add_mesh(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+
+  int nx_, ny_, nz_;
+  int sub_;  // scan lines per lattice spacing in x and in y
+  std::vector<double> alpha_;
+  std::vector<std::size_t> touched_;
+  std::vector<std::size_t> previous_;
+};
+
+}  // namespace rbcal::solver

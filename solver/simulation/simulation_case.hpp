@@ -1,0 +1,61 @@
+#pragma once
+// One simulation case: cells, flow parameters, numerics and run length, read from and
+// written to the case JSON of DESIGN.md section 4 (schema "rbcal.case/1"). Lengths in
+// cell radii a, times as shear strain gamma_dot t; see lattice_units.hpp for the
+// conversion to lattice units.
+#include <array>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "solver/coupling/peskin_kernel.hpp"
+#include "solver/lattice_units.hpp"
+#include "solver/membrane/cell_shapes.hpp"
+#include "solver/membrane/strain_energy.hpp"
+
+namespace rbcal::solver {
+
+enum class CellShape { Sphere, Biconcave };
+enum class Integrator { Euler, RK4 };
+
+struct CellPlacement {
+  std::array<double, 3> center{0.0, 0.0, 0.0};  // in a, relative to the box centre
+  // Rotation of the reference cell (symmetry axis z) as axis (need not be unit) and angle [deg].
+  std::array<double, 4> rotation{0.0, 0.0, 1.0, 0.0};
+};
+
+struct SimulationCase {
+  // params
+  FlowParameters flow;     // Ca, lambda, Re, kb_hat
+  double target_phi = 0.0;  // volume fraction asked for (0: cells placed explicitly)
+  // cells
+  CellShape shape = CellShape::Biconcave;
+  BiconcaveProfile profile = BiconcaveProfile::EvansFung;
+  int triangles = 1280;
+  MembraneLaw law = MembraneLaw::Skalak;
+  double skalak_c = 100.0;
+  std::vector<CellPlacement> cells;
+  // numerics
+  LatticeResolution resolution;
+  KernelKind kernel = KernelKind::Peskin4;
+  Integrator integrator = Integrator::RK4;
+  double volume_stiffness = 10.0;  // k_v in G_s / a
+  std::uint64_t seed = 1;
+  // run
+  double strain_end = 100.0;                    // gamma_dot t at the end
+  std::array<double, 2> window = {40.0, 100.0};  // averaging window in gamma_dot t
+  double record_interval = 0.1;                 // strain between time-series rows
+  double vtk_interval = 0.0;                    // strain between VTK snapshots (0: none)
+  bool quiescent = false;  // walls and fluid at rest (tests): gamma_dot only sets the time unit
+};
+
+// Parses a case; errors name the file and the JSON field ("numerics.N_a").
+SimulationCase read_case(const std::string& path);
+SimulationCase case_from_json(const nlohmann::json& j, const std::string& source);
+nlohmann::json case_to_json(const SimulationCase& c);
+
+std::string to_string(CellShape s);
+std::string to_string(Integrator i);
+
+}  // namespace rbcal::solver

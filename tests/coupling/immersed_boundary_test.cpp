@@ -1,0 +1,104 @@
+// Immersed-boundary kernels and transfer operators (Peskin, Acta Numerica 11 (2002) 479):
+// moment conditions of the kernels, conservation of force and torque by spreading, and
+// exact interpolation of linear velocity fields.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "solver/coupling/immersed_boundary.hpp"
+
+using namespace rbcal::solver;
+
+class Kernels : public ::testing::TestWithParam<KernelKind> {};
+
+TEST_P(Kernels, SatisfyZerothAndFirstMomentConditions) {
+  const KernelKind k = GetParam();
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double r = u(rng);
+    double m0 = 0.0, m1 = 0.0, m2 = 0.0, even = 0.0;
+    for (int j = -6; j <= 6; ++j) {
+      const double w = kernel_weight(k, r - j);
+      EXPECT_GE(w, 0.0);
+      m0 += w;
+      m1 += (r - j) * w;
+      m2 += w * w;
+      if (j % 2 == 0) even += w;
+    }
+    EXPECT_NEAR(m0, 1.0, 1e-14) << r;
+    EXPECT_NEAR(m1, 0.0, 1e-14) << r;
+    if (k == KernelKind::Peskin4) {
+      EXPECT_NEAR(m2, 3.0 / 8.0, 1e-14) << r;  // Peskin (2002) eq. 6.25
+      EXPECT_NEAR(even, 0.5, 1e-14) << r;
+    }
+  }
+  EXPECT_EQ(kernel_weight(k, kernel_support(k) / 2.0 + 1e-9), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, Kernels, ::testing::Values(KernelKind::Linear2, KernelKind::Roma3, KernelKind::Peskin4));
+
+TEST(Spreading, ConservesForceAndTorque) {
+  for (KernelKind k : {KernelKind::Linear2, KernelKind::Roma3, KernelKind::Peskin4}) {
+    FluidConfig cfg;
+    cfg.nx = 16;
+    cfg.ny = 16;
+    cfg.nz = 16;
+    FluidLattice fluid(cfg);
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> pos(4.0, 11.0), frc(-1.0, 1.0);
+    std::vector<Vec3> x, f;
+    for (int i = 0; i < 50; ++i) {
+      x.emplace_back(pos(rng), pos(rng), pos(rng));
+      f.emplace_back(frc(rng), frc(rng), frc(rng));
+    }
+    spread_forces(k, x, f, fluid);
+    Vec3 total = Vec3::Zero(), torque = Vec3::Zero(), total_l = Vec3::Zero(), torque_l = Vec3::Zero();
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      total += f[i];
+      torque += x[i].cross(f[i]);
+    }
+    for (int ix = 0; ix < 16; ++ix)
+      for (int iy = 0; iy < 16; ++iy)
+        for (int iz = 0; iz < 16; ++iz) {
+          const std::size_t n = fluid.index(ix, iy, iz);
+          const Vec3 fn(fluid.force(0)[n], fluid.force(1)[n], fluid.force(2)[n]);
+          total_l += fn;
+          torque_l += Vec3(ix, iy, iz).cross(fn);
+        }
+    EXPECT_LT((total_l - total).norm(), 1e-12);
+    EXPECT_LT((torque_l - torque).norm(), 1e-11);
+  }
+}
+
+TEST(Spreading, ConservesForceNextToAWall) {
+  FluidConfig cfg;
+  cfg.nx = cfg.ny = cfg.nz = 8;
+  FluidLattice fluid(cfg);
+  spread_forces(KernelKind::Peskin4, {Vec3(3.3, 0.2, 4.1)}, {Vec3(0.3, -1.0, 2.0)}, fluid);
+  Vec3 total = Vec3::Zero();
+  for (std::size_t n = 0; n < fluid.node_count(); ++n) total += Vec3(fluid.force(0)[n], fluid.force(1)[n], fluid.force(2)[n]);
+  EXPECT_LT((total - Vec3(0.3, -1.0, 2.0)).norm(), 1e-14);
+}
+
+TEST(Interpolation, ReproducesLinearFieldsExactly) {
+  FluidConfig cfg;
+  cfg.nx = cfg.ny = cfg.nz = 16;
+  FluidLattice fluid(cfg);
+  Eigen::Matrix3d grad;
+  grad << 1e-3, -2e-4, 5e-4, 3e-4, -1e-3, 2e-4, -4e-4, 1e-4, 7e-4;
+  const Vec3 u0(1e-3, -2e-3, 3e-3);
+  for (int ix = 0; ix < 16; ++ix)
+    for (int iy = 0; iy < 16; ++iy)
+      for (int iz = 0; iz < 16; ++iz) {
+        const Vec3 u = u0 + grad * Vec3(ix, iy, iz);
+        fluid.set_equilibrium(fluid.index(ix, iy, iz), 1.0, u.x(), u.y(), u.z());
+      }
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> pos(3.0, 12.0);
+  for (KernelKind k : {KernelKind::Linear2, KernelKind::Roma3, KernelKind::Peskin4})
+    for (int i = 0; i < 100; ++i) {
+      const Vec3 x(pos(rng), pos(rng), pos(rng));
+      EXPECT_LT((interpolate_velocity(k, fluid, x) - (u0 + grad * x)).norm(), 1e-15);
+    }
+}
