@@ -7,5 +7,6 @@ namespace rbcal::cli {
 void add_couette_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_stretch_command(CLI::App& app);
+void add_simulate_command(CLI::App& app);
 
 }  // namespace rbcal::cli

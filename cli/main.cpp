@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   rbcal::cli::add_couette_command(app);
   rbcal::cli::add_bench_command(app);
   rbcal::cli::add_stretch_command(app);
+  rbcal::cli::add_simulate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -19,6 +19,16 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
   return six_v / 6.0;
 }
 
+double correct_volume(std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double v0) {
+  std::vector<Vec3> gradient(x.size(), Vec3::Zero());
+  const double v = add_volume_gradient(x, triangles, 1.0, gradient);
+  double norm2 = 0.0;
+  for (const Vec3& g : gradient) norm2 += g.squaredNorm();
+  const double s = (v0 - v) / norm2;
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] += s * gradient[i];
+  return v / v0 - 1.0;
+}
+
 VolumePenalty::VolumePenalty(double reference_volume, double stiffness) : v0_(reference_volume), k_v_(stiffness) {
   if (!(reference_volume > 0.0)) throw std::invalid_argument("volume penalty: reference volume must be positive");
   if (!(stiffness >= 0.0)) throw std::invalid_argument("volume penalty: stiffness must be >= 0");

@@ -112,6 +112,7 @@ void ShearFlowSimulation::move_cells() {
       }
     }
     for (long m = 0; m < n; ++m) x[m] += v[m];
+    correct_volume(x, membrane_->reference().triangles, membrane_->reference_volume());
   }
 }
 

@@ -6,7 +6,8 @@
 //
 // One step: membrane forces at X^n -> spread to the lattice -> inside fraction and
 // viscosity from X^n -> stream + collide -> node velocities interpolated from the new
-// populations -> X^{n+1} by Euler or by RK4 through the (frozen) interpolated field.
+// populations -> X^{n+1} by Euler or by RK4 through the (frozen) interpolated field ->
+// volume correction (volume_constraint.hpp).
 #include <memory>
 #include <vector>
 

@@ -40,7 +40,7 @@ struct SimulationCase {
   LatticeResolution resolution;
   KernelKind kernel = KernelKind::Peskin4;
   Integrator integrator = Integrator::RK4;
-  double volume_stiffness = 10.0;  // k_v in G_s / a
+  double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force
   std::uint64_t seed = 1;
   // run
   double strain_end = 100.0;                    // gamma_dot t at the end

@@ -1,0 +1,170 @@
+#include "solver/simulation/case_runner.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <numbers>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "rbcal/build_info.hpp"
+#include "solver/io/vtk_writer.hpp"
+#include "solver/simulation/block_average.hpp"
+#include "solver/simulation/shear_flow_simulation.hpp"
+
+namespace rbcal::solver {
+
+namespace fs = std::filesystem;
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error("error while writing " + tmp);
+  }
+  fs::rename(tmp, path);
+}
+
+namespace {
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  std::ostringstream s;
+  s << std::put_time(&tm, "%Y-%m-%dT%H:%M:%SZ");
+  return s.str();
+}
+
+std::string host_name() {
+  char name[256] = {0};
+  return gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string("unknown");
+}
+
+std::string format_seconds(double s) {
+  std::ostringstream o;
+  if (s >= 3600) o << static_cast<int>(s / 3600) << "h" << std::setw(2) << std::setfill('0') << static_cast<int>(s / 60) % 60 << "m";
+  else if (s >= 60) o << static_cast<int>(s / 60) << "m" << std::setw(2) << std::setfill('0') << static_cast<int>(s) % 60 << "s";
+  else o << std::fixed << std::setprecision(1) << s << "s";
+  return o.str();
+}
+
+void check_state(const Observables& o, std::int64_t step) {
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error("run stopped at step " + std::to_string(step) + " (strain " + std::to_string(o.strain) +
+                             "): " + what);
+  };
+  if (!std::isfinite(o.eta_re_stresslet)) fail("eta_re from the stresslet is not finite");
+  if (!std::isfinite(o.eta_re_wall)) fail("eta_re from the wall stress is not finite");
+  for (std::size_t i = 0; i < o.cells.size(); ++i)
+    if (!std::isfinite(o.cells[i].volume_error) || std::abs(o.cells[i].volume_error) > 0.5)
+      fail("cell " + std::to_string(i) + ": volume error " + std::to_string(o.cells[i].volume_error));
+  if (!(o.max_mach < 0.3)) fail("membrane-node Mach number " + std::to_string(o.max_mach) + " exceeds 0.3");
+}
+
+}  // namespace
+
+nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
+  fs::create_directories(opt.output_dir);
+  ShearFlowSimulation sim(c);
+  const LatticeUnits& u = sim.units();
+  const double gamma = u.shear_rate;
+  const auto total_steps = static_cast<std::int64_t>(std::ceil(c.strain_end / gamma - 1e-9));
+  const auto record_every = std::max<std::int64_t>(1, std::llround(c.record_interval / gamma));
+  const std::int64_t vtk_every = c.vtk_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.vtk_interval / gamma)) : 0;
+
+  std::ofstream series(opt.output_dir + "/series.csv");
+  if (!series) throw std::runtime_error("cannot write " + opt.output_dir + "/series.csv");
+  series << "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach\n";
+  series << std::setprecision(10);
+  std::vector<double> window_stresslet, window_wall, window_d, window_angle;
+  std::vector<std::pair<double, std::string>> vtk_cells, vtk_fluid;
+  if (vtk_every) fs::create_directories(opt.output_dir + "/vtk");
+
+  auto snapshot = [&](std::int64_t step) {
+    std::ostringstream name;
+    name << std::setw(7) << std::setfill('0') << step;
+    const std::string cells = "vtk/cells_" + name.str() + ".vtp", fluid = "vtk/fluid_" + name.str() + ".vti";
+    write_membranes_vtp(opt.output_dir + "/" + cells,
+                        {&sim.positions(), &sim.velocities(), &sim.membrane_forces(), &sim.triangles()});
+    write_fluid_vti(opt.output_dir + "/" + fluid, sim.fluid(), &sim.inside_fraction().alpha());
+    vtk_cells.emplace_back(sim.strain(), cells);
+    vtk_fluid.emplace_back(sim.strain(), fluid);
+    write_pvd(opt.output_dir + "/cells.pvd", vtk_cells);
+    write_pvd(opt.output_dir + "/fluid.pvd", vtk_fluid);
+  };
+  if (vtk_every) snapshot(0);
+
+  auto last_report = std::chrono::steady_clock::now();
+  for (std::int64_t step = 1; step <= total_steps; ++step) {
+    sim.step();
+    if (step % record_every == 0 || step == total_steps) {
+      const Observables o = sim.observe();
+      check_state(o, step);
+      double vol = 0.0;
+      for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
+      const double d = o.cells.empty() ? 0.0 : o.cells[0].shape.taylor_deformation;
+      const double angle = o.cells.empty() ? 0.0 : o.cells[0].shape.inclination * 180.0 / std::numbers::pi;
+      series << o.strain << ',' << o.eta_re_stresslet << ',' << o.eta_re_wall << ',' << d << ',' << angle << ','
+             << vol << ',' << o.max_mach << '\n';
+      if (o.strain >= c.window[0] - 1e-9 && o.strain <= c.window[1] + 1e-9) {
+        window_stresslet.push_back(o.eta_re_stresslet);
+        window_wall.push_back(o.eta_re_wall);
+        window_d.push_back(d);
+        window_angle.push_back(angle);
+      }
+    }
+    if (vtk_every && step % vtk_every == 0) snapshot(step);
+    const auto now = std::chrono::steady_clock::now();
+    if (opt.progress && std::chrono::duration<double>(now - last_report).count() >= opt.progress_seconds) {
+      last_report = now;
+      const double elapsed = std::chrono::duration<double>(now - start).count();
+      const double eta = elapsed / step * (total_steps - step);
+      *opt.progress << "  step " << step << "/" << total_steps << "  strain " << std::fixed << std::setprecision(2)
+                    << sim.strain() << "/" << c.strain_end << "  elapsed " << format_seconds(elapsed) << "  ETA "
+                    << format_seconds(eta) << std::endl;
+    }
+  }
+  series.close();
+
+  const MeanWithError eta = block_average(window_stresslet), wall = block_average(window_wall);
+  const MeanWithError d = block_average(window_d), angle = block_average(window_angle);
+  const double cell_volume = enclosed_volume(sim.positions().empty() ? std::vector<Vec3>{} : sim.positions()[0],
+                                             sim.triangles());
+  nlohmann::json j = case_to_json(c);
+  for (const auto& [name, value] : u.entries()) j["lattice"][name] = value;
+  j["result"] = {
+      {"eta_re", eta.mean},
+      {"eta_re_sem", eta.sem},
+      {"eta_re_wall", wall.mean},
+      {"eta_re_wall_sem", wall.sem},
+      {"window_samples", eta.samples},
+      {"phi_actual", sim.positions().size() * cell_volume / (static_cast<double>(u.nx) * u.ny * u.nz)},
+      {"n_cells", sim.positions().size()},
+      {"steps", total_steps},
+      {"taylor_deformation", d.mean},
+      {"taylor_deformation_sem", d.sem},
+      {"inclination_deg", angle.mean},
+      {"inclination_deg_sem", angle.sem},
+      {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()},
+  };
+  j["provenance"] = {{"rbcal_version", build_info::version},
+                     {"git_revision", build_info::git_revision},
+                     {"date", utc_now()},
+                     {"host", host_name()}};
+  write_file_atomically(opt.output_dir + "/result.json", j.dump(2) + "\n");
+  return j;
+}
+
+}  // namespace rbcal::solver
