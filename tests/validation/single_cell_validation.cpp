@@ -1,0 +1,167 @@
+// Single-cell validations of the coupled solver (ctest label `validation`; tens of
+// minutes on two cores). Each case is run with the same code path as `rbcal simulate`
+// and its outputs are kept under validation_runs/ in the working directory; the measured
+// numbers are recorded in docs/validation.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solver/simulation/case_runner.hpp"
+
+using namespace rbcal::solver;
+
+namespace {
+
+SimulationCase spherical_capsule(double ca_g, int nodes_per_radius) {
+  SimulationCase c;
+  c.shape = CellShape::Sphere;
+  c.triangles = 1280;
+  c.law = MembraneLaw::NeoHookean;
+  c.flow.capillary_number = ca_g;
+  c.flow.viscosity_ratio = 1.0;
+  c.flow.reduced_bending = 0.0;
+  c.flow.reynolds_number = 0.2;
+  c.resolution.nodes_per_radius = nodes_per_radius;
+  c.resolution.box_in_radii = {6.0, 10.0, 8.0};
+  c.cells.push_back({});
+  c.strain_end = 6.0;
+  c.window = {5.0, 6.0};
+  c.record_interval = 0.05;
+  return c;
+}
+
+nlohmann::json run(const SimulationCase& c, const std::string& name) {
+  RunOptions o;
+  o.output_dir = "validation_runs/" + name;
+  o.progress = &std::cerr;
+  o.progress_seconds = 60.0;
+  const nlohmann::json j = run_case(c, o);
+  const auto& r = j["result"];
+  std::cout << name << ": D = " << r["taylor_deformation"].get<double>() << ", inclination "
+            << r["inclination_deg"].get<double>() << " deg, eta_re stresslet " << r["eta_re"].get<double>() << " +- "
+            << r["eta_re_sem"].get<double>() << ", wall " << r["eta_re_wall"].get<double>() << " +- "
+            << r["eta_re_wall_sem"].get<double>() << ", " << r["wall_seconds"].get<double>() << " s\n";
+  return j;
+}
+
+// Both viscosity estimates agree within their errors (3 combined SEM, or 1e-3 when the
+// series is so steady that the SEM vanishes).
+void expect_viscosities_agree(const nlohmann::json& r) {
+  const double diff = std::abs(r["eta_re"].get<double>() - r["eta_re_wall"].get<double>());
+  const double sem = std::hypot(r["eta_re_sem"].get<double>(), r["eta_re_wall_sem"].get<double>());
+  EXPECT_LT(diff, std::max(3.0 * sem, 1e-3)) << "stresslet vs wall-stress viscosity";
+}
+
+std::vector<std::vector<double>> read_series(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<double> row;
+    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+// Reference: data/reference/capsule_shear_neo_hookean.csv (Ramanujan & Pozrikidis 1998,
+// Doddi & Bagchi 2008; Ca_G = 3 Ca_E). Agreement asked: within 8 % of the mean of the
+// sources (they differ from each other by up to 7 %; our box has walls at 5 a and Re = 0.2).
+class CapsuleTaylorDeformation : public ::testing::TestWithParam<std::pair<double, double>> {};
+
+TEST_P(CapsuleTaylorDeformation, MatchesBoundaryIntegralResults) {
+  const auto [ca_g, d_ref] = GetParam();
+  const nlohmann::json j = run(spherical_capsule(ca_g, 8), "capsule_ca" + std::to_string(ca_g));
+  const auto& r = j["result"];
+  EXPECT_NEAR(r["taylor_deformation"].get<double>() / d_ref, 1.0, 0.08) << "Ca_G = " << ca_g;
+  expect_viscosities_agree(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(NeoHookean, CapsuleTaylorDeformation,
+                         ::testing::Values(std::pair{0.0375, 0.083}, std::pair{0.075, 0.156},
+                                           std::pair{0.15, 0.2695}, std::pair{0.3, 0.3885},
+                                           std::pair{0.6, 0.4975}));
+
+TEST(CapsuleResolution, DeformationConvergesWithLatticeResolution) {
+  // Ca_G = 0.15 (Ca_E = 0.05) at N_a = 6, 8, 10: the change must shrink.
+  std::vector<double> d;
+  for (int n : {6, 8, 10})
+    d.push_back(run(spherical_capsule(0.15, n), "capsule_resolution_Na" + std::to_string(n))["result"]
+                    ["taylor_deformation"].get<double>());
+  std::cout << "D at N_a = 6, 8, 10: " << d[0] << ", " << d[1] << ", " << d[2] << "\n";
+  EXPECT_LT(std::abs(d[2] - d[1]), std::abs(d[1] - d[0]));
+}
+
+TEST(DiluteStiffSpheres, IntrinsicViscosityNearEinstein) {
+  // One nearly rigid sphere (Ca_G = 0.01, D about 0.02): eta_sp / phi against Einstein's
+  // 5/2 (Einstein 1906, 1911). Walls and the periodic images raise it; see
+  // docs/validation.md. Asserted: between 2.5 and 4.
+  SimulationCase c = spherical_capsule(0.01, 8);
+  c.strain_end = 4.0;
+  c.window = {3.0, 4.0};
+  const nlohmann::json j = run(c, "stiff_sphere");
+  const double phi = j["result"]["phi_actual"].get<double>();
+  const double ratio = (j["result"]["eta_re"].get<double>() - 1.0) / phi;
+  std::cout << "stiff sphere: phi = " << phi << ", eta_sp / phi = " << ratio << "\n";
+  EXPECT_GT(ratio, 2.5);
+  EXPECT_LT(ratio, 4.0);
+  expect_viscosities_agree(j["result"]);
+}
+
+// A single red blood cell at lambda = 5 starting with its axis in the shear plane: at low
+// Ca it flips over (tumbling: the shear-plane inclination sweeps through +-90 degrees),
+// at high Ca its inclination stays bounded (tank-treading or swinging), as the seed study
+// reports for its cells.
+double inclination_range(const std::string& series, double from_strain) {
+  double lo = 1e9, hi = -1e9;
+  for (const auto& row : read_series(series))
+    if (row[0] >= from_strain) {
+      lo = std::min(lo, row[4]);
+      hi = std::max(hi, row[4]);
+    }
+  return hi - lo;
+}
+
+SimulationCase single_rbc(double ca) {
+  SimulationCase c;
+  c.shape = CellShape::Biconcave;
+  c.triangles = 1280;
+  c.law = MembraneLaw::Skalak;
+  c.flow.capillary_number = ca;
+  c.flow.viscosity_ratio = 5.0;
+  c.flow.reynolds_number = 0.2;
+  c.resolution.nodes_per_radius = 8;
+  c.resolution.tau_out = 0.8;  // keeps tau_in = 3 lambda nu_out + 1/2 = 2 moderate
+  c.resolution.box_in_radii = {6.0, 8.0, 8.0};
+  // Symmetry axis turned from z towards y by 60 degrees: in the shear plane.
+  c.cells.push_back({{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 60.0}});
+  c.record_interval = 0.1;
+  return c;
+}
+
+TEST(SingleRbc, TumblesAtLowCaAndTankTreadsAtHighCa) {
+  SimulationCase stiff = single_rbc(0.05), soft = single_rbc(0.8);
+  stiff.strain_end = 20.0;
+  stiff.window = {10.0, 20.0};
+  soft.strain_end = 12.0;
+  soft.window = {6.0, 12.0};
+  run(stiff, "rbc_lambda5_ca0.05");
+  run(soft, "rbc_lambda5_ca0.8");
+  const double low = inclination_range("validation_runs/rbc_lambda5_ca0.05/series.csv", 2.0);
+  const double high = inclination_range("validation_runs/rbc_lambda5_ca0.8/series.csv", 6.0);
+  std::cout << "inclination range: " << low << " deg (Ca 0.05), " << high << " deg (Ca 0.8)\n";
+  EXPECT_GT(low, 150.0);
+  EXPECT_LT(high, 90.0);
+}
