@@ -163,6 +163,13 @@ void FluidLattice::step() {
   ++steps_;
 }
 
+void FluidLattice::restore(const std::vector<double>& populations, std::int64_t steps) {
+  require(populations.size() == f_.size(), "checkpoint holds " + std::to_string(populations.size()) +
+                                               " populations, the lattice needs " + std::to_string(f_.size()));
+  std::copy(populations.begin(), populations.end(), f_.begin());
+  steps_ = steps;
+}
+
 NodeMoments FluidLattice::moments(std::size_t node) const {
   double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
   for (int q = 0; q < Q; ++q) {

@@ -73,6 +73,10 @@ class FluidLattice {
   void step();
 
   NodeMoments moments(std::size_t node) const;
+
+  // The whole state (post-collision populations and step count), for checkpoints.
+  const AlignedVector<double>& populations() const { return f_; }
+  void restore(const std::vector<double>& populations, std::int64_t steps);
   double population(int q, std::size_t node) const { return f_[q * stride_ + node]; }
   double total_mass() const;
   WallTraction wall_traction() const;

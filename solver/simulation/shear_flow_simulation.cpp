@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
+#include "solver/simulation/checkpoint.hpp"
 
 namespace rbcal::solver {
 
@@ -123,6 +124,33 @@ void ShearFlowSimulation::step() {
   update_viscosity();
   fluid_.step();
   move_cells();
+}
+
+void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
+  CheckpointState s;
+  s.case_json = case_to_json(case_).dump();
+  s.steps = fluid_.steps_done();
+  s.populations.assign(fluid_.populations().begin(), fluid_.populations().end());
+  s.positions = x_;
+  s.velocities = v_;
+  s.forces = f_;
+  write_checkpoint(path, s);
+}
+
+void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
+  CheckpointState s = read_checkpoint(path);
+  if (s.case_json != case_to_json(case_).dump())
+    throw std::runtime_error("checkpoint " + path + " belongs to a different case");
+  if (s.positions.size() != x_.size()) throw std::runtime_error("checkpoint " + path + ": wrong number of cells");
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    if (s.positions[i].size() != x_[i].size() || s.velocities[i].size() != x_[i].size() ||
+        s.forces[i].size() != x_[i].size())
+      throw std::runtime_error("checkpoint " + path + ": cell " + std::to_string(i) + " has the wrong node count");
+  fluid_.restore(s.populations, s.steps);
+  x_ = std::move(s.positions);
+  v_ = std::move(s.velocities);
+  f_ = std::move(s.forces);
+  update_viscosity();
 }
 
 Observables ShearFlowSimulation::observe() const {

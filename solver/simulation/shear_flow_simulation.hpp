@@ -9,6 +9,7 @@
 // populations -> X^{n+1} by Euler or by RK4 through the (frozen) interpolated field ->
 // volume correction (volume_constraint.hpp).
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "solver/coupling/inside_fraction.hpp"
@@ -39,6 +40,11 @@ class ShearFlowSimulation {
 
   void step();
   Observables observe() const;
+
+  // Checkpoints (checkpoint.hpp): restoring continues bit-identically.
+  void save_checkpoint(const std::string& path) const;
+  // Throws if the checkpoint belongs to another case or lattice.
+  void restore_checkpoint(const std::string& path);
 
   double strain() const { return static_cast<double>(fluid_.steps_done()) * units_.shear_rate; }
   std::int64_t steps_done() const { return fluid_.steps_done(); }
