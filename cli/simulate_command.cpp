@@ -14,6 +14,8 @@ struct SimulateOptions {
   std::string case_path;
   std::string output_dir;
   bool quiet = false;
+  bool resume = false;
+  long long max_steps = 0;
 };
 
 void run_simulate(const SimulateOptions& o) {
@@ -23,8 +25,15 @@ void run_simulate(const SimulateOptions& o) {
   solver::RunOptions ro;
   ro.output_dir = out;
   ro.progress = o.quiet ? nullptr : &std::cerr;
+  ro.resume = o.resume;
+  ro.max_steps = o.max_steps;
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
+  if (!j.contains("result")) {
+    std::cout << "rbcal simulate: stopped at strain " << j["strain"].get<double>() << " after --max-steps; "
+              << "checkpoint " << j["checkpoint"].get<std::string>() << " (continue with --resume)\n";
+    return;
+  }
   const auto& r = j["result"];
   std::cout << "rbcal simulate: " << o.case_path << "\n"
             << "  lattice " << j["lattice"]["nx"].get<double>() << " x " << j["lattice"]["ny"].get<double>() << " x "
@@ -48,6 +57,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("case", o->case_path, "Case file (see data/cases/ for examples)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", o->output_dir, "Output folder (default: CASE stem + .out)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress lines");
+  cmd->add_flag("--resume", o->resume, "Continue from OUTPUT/checkpoint.bin if it exists (bit-identical)");
+  cmd->add_option("--max-steps", o->max_steps, "Stop after this many lattice steps, with a checkpoint (0: to the end)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([o] { run_simulate(*o); });
 }
 

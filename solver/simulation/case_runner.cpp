@@ -84,14 +84,46 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
   const auto record_every = std::max<std::int64_t>(1, std::llround(c.record_interval / gamma));
   const std::int64_t vtk_every = c.vtk_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.vtk_interval / gamma)) : 0;
 
-  std::ofstream series(opt.output_dir + "/series.csv");
-  if (!series) throw std::runtime_error("cannot write " + opt.output_dir + "/series.csv");
-  series << "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach\n";
-  series << std::setprecision(10);
+  const std::string series_path = opt.output_dir + "/series.csv";
+  const std::string checkpoint_path = opt.output_dir + "/checkpoint.bin";
+  const std::int64_t checkpoint_every =
+      c.checkpoint_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.checkpoint_interval / gamma)) : 0;
   std::vector<double> window_stresslet, window_wall, window_d, window_angle;
+  auto keep_for_window = [&](double strain, double eta_s, double eta_w, double d, double angle) {
+    if (strain < c.window[0] - 1e-9 || strain > c.window[1] + 1e-9) return;
+    window_stresslet.push_back(eta_s);
+    window_wall.push_back(eta_w);
+    window_d.push_back(d);
+    window_angle.push_back(angle);
+  };
+  const std::string header =
+      "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach\n";
+
+  std::int64_t first_step = 1;
+  std::string kept_rows;
+  if (opt.resume && fs::exists(checkpoint_path)) {
+    sim.restore_checkpoint(checkpoint_path);
+    first_step = sim.steps_done() + 1;
+    // Keep the rows up to the checkpoint; later ones are recomputed.
+    std::ifstream old(series_path);
+    std::string line;
+    std::getline(old, line);
+    while (std::getline(old, line)) {
+      std::vector<double> v;
+      std::stringstream ss(line);
+      std::string cell;
+      while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+      if (v.size() < 5 || v[0] > sim.strain() + 1e-9) break;
+      keep_for_window(v[0], v[1], v[2], v[3], v[4]);
+      kept_rows += line + "\n";
+    }
+    if (opt.progress) *opt.progress << "  resuming from " << checkpoint_path << " at strain " << sim.strain() << "\n";
+  }
+  std::ofstream series(series_path, std::ios::trunc);
+  if (!series) throw std::runtime_error("cannot write " + series_path);
+  series << header << kept_rows << std::setprecision(17);  // exact round trip on resume
   std::vector<std::pair<double, std::string>> vtk_cells, vtk_fluid;
   if (vtk_every) fs::create_directories(opt.output_dir + "/vtk");
-
   auto snapshot = [&](std::int64_t step) {
     std::ostringstream name;
     name << std::setw(7) << std::setfill('0') << step;
@@ -104,33 +136,40 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
     write_pvd(opt.output_dir + "/cells.pvd", vtk_cells);
     write_pvd(opt.output_dir + "/fluid.pvd", vtk_fluid);
   };
-  if (vtk_every) snapshot(0);
+  if (vtk_every && first_step == 1) snapshot(0);
 
   auto last_report = std::chrono::steady_clock::now();
-  for (std::int64_t step = 1; step <= total_steps; ++step) {
+  for (std::int64_t step = first_step; step <= total_steps; ++step) {
     sim.step();
     if (step % record_every == 0 || step == total_steps) {
       const Observables o = sim.observe();
-      check_state(o, step);
+      try {
+        check_state(o, step);
+      } catch (const std::runtime_error& e) {
+        const std::string failed = opt.output_dir + "/checkpoint_failed.bin";
+        sim.save_checkpoint(failed);
+        throw std::runtime_error(std::string(e.what()) + "; state written to " + failed);
+      }
       double vol = 0.0;
       for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
       const double d = o.cells.empty() ? 0.0 : o.cells[0].shape.taylor_deformation;
       const double angle = o.cells.empty() ? 0.0 : o.cells[0].shape.inclination * 180.0 / std::numbers::pi;
       series << o.strain << ',' << o.eta_re_stresslet << ',' << o.eta_re_wall << ',' << d << ',' << angle << ','
              << vol << ',' << o.max_mach << '\n';
-      if (o.strain >= c.window[0] - 1e-9 && o.strain <= c.window[1] + 1e-9) {
-        window_stresslet.push_back(o.eta_re_stresslet);
-        window_wall.push_back(o.eta_re_wall);
-        window_d.push_back(d);
-        window_angle.push_back(angle);
-      }
+      keep_for_window(o.strain, o.eta_re_stresslet, o.eta_re_wall, d, angle);
     }
     if (vtk_every && step % vtk_every == 0) snapshot(step);
+    const bool stop_now = opt.max_steps > 0 && step - first_step + 1 >= opt.max_steps && step < total_steps;
+    if ((checkpoint_every && step % checkpoint_every == 0) || stop_now) {
+      series.flush();
+      sim.save_checkpoint(checkpoint_path);
+    }
+    if (stop_now) return {{"status", "interrupted"}, {"strain", sim.strain()}, {"checkpoint", checkpoint_path}};
     const auto now = std::chrono::steady_clock::now();
     if (opt.progress && std::chrono::duration<double>(now - last_report).count() >= opt.progress_seconds) {
       last_report = now;
       const double elapsed = std::chrono::duration<double>(now - start).count();
-      const double eta = elapsed / step * (total_steps - step);
+      const double eta = elapsed / static_cast<double>(step - first_step + 1) * (total_steps - step);
       *opt.progress << "  step " << step << "/" << total_steps << "  strain " << std::fixed << std::setprecision(2)
                     << sim.strain() << "/" << c.strain_end << "  elapsed " << format_seconds(elapsed) << "  ETA "
                     << format_seconds(eta) << std::endl;

@@ -5,8 +5,12 @@
 //   series.csv   one row per record interval: strain, eta_re (stresslet and wall), shape
 //                of the first cell, volume error, node Mach number
 //   vtk/         membranes (.vtp) and fluid (.vti) snapshots with a .pvd index
+//   checkpoint.bin  the latest checkpoint (every run.checkpoint_interval of strain)
 // Progress with an ETA goes to a stream. Stops with a message naming the quantity, the
-// cell and the step if the state turns non-finite or the Mach number exceeds 0.3.
+// cell and the step if the state turns non-finite or the Mach number exceeds 0.3, after
+// writing checkpoint_failed.bin. With resume, a run continues from checkpoint.bin: the
+// series is cut back to the checkpoint and the averages rebuilt from it, so a run killed
+// at any moment loses at most the work since its last checkpoint.
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -19,8 +23,12 @@ struct RunOptions {
   std::string output_dir;
   std::ostream* progress = nullptr;  // null: silent
   double progress_seconds = 5.0;     // between progress lines
+  bool resume = false;               // continue from output_dir/checkpoint.bin if present
+  std::int64_t max_steps = 0;        // stop after this many steps, with a checkpoint (0: run to the end)
 };
 
+// Returns the result JSON (also written to result.json), or, when max_steps stopped the
+// run early, {"status": "interrupted", "strain": ...} with the checkpoint written.
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& options);
 
 // Writes text to path via a temporary file and a rename, so that readers never see a

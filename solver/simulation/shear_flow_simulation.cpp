@@ -128,7 +128,7 @@ void ShearFlowSimulation::step() {
 
 void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   CheckpointState s;
-  s.case_json = case_to_json(case_).dump();
+  s.case_json = state_defining_json(case_).dump();
   s.steps = fluid_.steps_done();
   s.populations.assign(fluid_.populations().begin(), fluid_.populations().end());
   s.positions = x_;
@@ -139,7 +139,7 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
 
 void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   CheckpointState s = read_checkpoint(path);
-  if (s.case_json != case_to_json(case_).dump())
+  if (s.case_json != state_defining_json(case_).dump())
     throw std::runtime_error("checkpoint " + path + " belongs to a different case");
   if (s.positions.size() != x_.size()) throw std::runtime_error("checkpoint " + path + ": wrong number of cells");
   for (std::size_t i = 0; i < x_.size(); ++i)

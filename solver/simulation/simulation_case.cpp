@@ -150,6 +150,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     r.fail("run.window", "must satisfy 0 <= start < end <= run.strain_end");
   c.record_interval = r.number("run.record_interval", c.record_interval, 1e-6, 1e6);
   c.vtk_interval = r.number("run.vtk_interval", c.vtk_interval, 0.0, 1e7);
+  c.checkpoint_interval = r.number("run.checkpoint_interval", c.checkpoint_interval, 0.0, 1e7);
   if (const nlohmann::json* q = r.find("run.quiescent")) {
     if (!q->is_boolean()) r.fail("run.quiescent", "must be true or false");
     c.quiescent = q->get<bool>();
@@ -193,7 +194,16 @@ nlohmann::json case_to_json(const SimulationCase& c) {
               {"window", c.window},
               {"record_interval", c.record_interval},
               {"vtk_interval", c.vtk_interval},
+              {"checkpoint_interval", c.checkpoint_interval},
               {"quiescent", c.quiescent}};
+  return j;
+}
+
+nlohmann::json state_defining_json(const SimulationCase& c) {
+  nlohmann::json j = case_to_json(c);
+  const bool quiescent = c.quiescent;
+  j.erase("run");
+  j["quiescent"] = quiescent;
   return j;
 }
 

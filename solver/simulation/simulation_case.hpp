@@ -48,7 +48,13 @@ struct SimulationCase {
   double record_interval = 0.1;                 // strain between time-series rows
   double vtk_interval = 0.0;                    // strain between VTK snapshots (0: none)
   bool quiescent = false;  // walls and fluid at rest (tests): gamma_dot only sets the time unit
+  double checkpoint_interval = 5.0;  // strain between checkpoints (0: none)
 };
+
+// The parts of a case that fix the physical state (params, cells, numerics, quiescent);
+// a checkpoint may be resumed under a case that differs only in the run length,
+// window or output intervals.
+nlohmann::json state_defining_json(const SimulationCase& c);
 
 // Parses a case; errors name the file and the JSON field ("numerics.N_a").
 SimulationCase read_case(const std::string& path);
