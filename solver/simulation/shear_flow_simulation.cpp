@@ -1,11 +1,13 @@
 #include "solver/simulation/shear_flow_simulation.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
+#include "solver/simulation/cell_seeding.hpp"
 #include "solver/simulation/checkpoint.hpp"
 
 namespace rbcal::solver {
@@ -43,8 +45,15 @@ ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c)
   membrane_ = std::make_unique<CellMembrane>(reference_cell(c, a), ms);
 
   const Vec3 centre = box_centre();
-  for (std::size_t i = 0; i < c.cells.size(); ++i) {
-    const CellPlacement& p = c.cells[i];
+  if (case_.cells.empty()) {
+    // Seed for the target volume fraction, two lattice spacings (and a little) off the walls.
+    const TriangleMesh unit_cell = reference_cell(c, 1.0);
+    const double gap = 2.0 / a + 1e-6;
+    const std::array<double, 3> box = {units_.nx / a, units_.ny / a, units_.nz / a};
+    case_.cells = seed_cells(c.target_phi, unit_cell, box, gap, c.seed).placements;
+  }
+  for (std::size_t i = 0; i < case_.cells.size(); ++i) {
+    const CellPlacement& p = case_.cells[i];
     Vec3 axis(p.rotation[0], p.rotation[1], p.rotation[2]);
     if (axis.norm() == 0.0) axis = Vec3::UnitZ();
     const Eigen::Matrix3d rot = Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0, axis.normalized()).toRotationMatrix();
@@ -93,27 +102,77 @@ void ShearFlowSimulation::update_viscosity() {
   for (std::size_t n : inside_.touched()) nu[n] = units_.nu_out * (1.0 + (lambda - 1.0) * inside_.alpha()[n]);
 }
 
-void ShearFlowSimulation::move_cells() {
-  const KernelKind k = case_.kernel;
-  for (std::size_t i = 0; i < x_.size(); ++i) {
-    std::vector<Vec3>& x = x_[i];
-    std::vector<Vec3>& v = v_[i];
-    const long n = static_cast<long>(x.size());
-#pragma omp parallel for schedule(static)
-    for (long m = 0; m < n; ++m) {
-      const Vec3 u1 = interpolate_velocity(k, fluid_, x[m]);
-      if (case_.integrator == Integrator::Euler) {
-        v[m] = u1;
-      } else {
-        // Classical RK4 through the velocity field of this step (dt = 1).
-        const Vec3 u2 = interpolate_velocity(k, fluid_, x[m] + 0.5 * u1);
-        const Vec3 u3 = interpolate_velocity(k, fluid_, x[m] + 0.5 * u2);
-        const Vec3 u4 = interpolate_velocity(k, fluid_, x[m] + u3);
-        v[m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
-      }
+void ShearFlowSimulation::update_velocity_field() {
+  const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
+  const std::size_t nodes = fluid_.node_count();
+  if (u_field_.size() != 3 * nodes) {
+    u_field_.assign(3 * nodes, 0.0);
+    needed_.assign(nodes, 0);
+  }
+  std::fill(needed_.begin(), needed_.end(), 0);
+  // Bounding box of each cell, widened by the kernel reach and one step of motion.
+  const int reach = kernel_support(case_.kernel) / 2 + 2;
+  for (const auto& x : x_) {
+    Vec3 lo = x[0], hi = x[0];
+    for (const Vec3& p : x) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
     }
-    for (long m = 0; m < n; ++m) x[m] += v[m];
-    correct_volume(x, membrane_->reference().triangles, membrane_->reference_volume());
+    const int x0 = static_cast<int>(std::floor(lo.x())) - reach, x1 = static_cast<int>(std::ceil(hi.x())) + reach;
+    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y())) - reach);
+    const int y1 = std::min(ny - 1, static_cast<int>(std::ceil(hi.y())) + reach);
+    const int z0 = static_cast<int>(std::floor(lo.z())) - reach, z1 = static_cast<int>(std::ceil(hi.z())) + reach;
+    for (int i = x0; i <= std::min(x1, x0 + nx - 1); ++i)
+      for (int j = y0; j <= y1; ++j)
+        for (int k = z0; k <= std::min(z1, z0 + nz - 1); ++k)
+          needed_[fluid_.index(((i % nx) + nx) % nx, j, ((k % nz) + nz) % nz)] = 1;
+  }
+  const long n = static_cast<long>(nodes);
+#pragma omp parallel for schedule(static)
+  for (long node = 0; node < n; ++node) {
+    if (!needed_[node]) continue;
+    const NodeMoments m = fluid_.moments(static_cast<std::size_t>(node));
+    u_field_[3 * node] = m.ux;
+    u_field_[3 * node + 1] = m.uy;
+    u_field_[3 * node + 2] = m.uz;
+  }
+}
+
+void ShearFlowSimulation::move_cells() {
+  update_velocity_field();
+  const KernelKind k = case_.kernel;
+  const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
+  auto velocity_at = [&](const Vec3& p) {
+    const KernelStencil s = make_stencil(k, p, nx, ny, nz);
+    return interpolate(s, [&](int i, int j, int l) {
+      const std::size_t node = fluid_.index(i, j, l);
+      return Vec3(u_field_[3 * node], u_field_[3 * node + 1], u_field_[3 * node + 2]);
+    });
+  };
+  // All nodes of all cells in one parallel loop: good for one cell and for many.
+  std::vector<std::size_t> offset(x_.size() + 1, 0);
+  for (std::size_t i = 0; i < x_.size(); ++i) offset[i + 1] = offset[i] + x_[i].size();
+  const long total = static_cast<long>(offset.back());
+#pragma omp parallel for schedule(static)
+  for (long g = 0; g < total; ++g) {
+    const std::size_t cell = std::upper_bound(offset.begin(), offset.end(), static_cast<std::size_t>(g)) - offset.begin() - 1;
+    const std::size_t m = static_cast<std::size_t>(g) - offset[cell];
+    const Vec3& x = x_[cell][m];
+    const Vec3 u1 = velocity_at(x);
+    if (case_.integrator == Integrator::Euler) {
+      v_[cell][m] = u1;
+    } else {
+      // Classical RK4 through the velocity field of this step (dt = 1).
+      const Vec3 u2 = velocity_at(x + 0.5 * u1);
+      const Vec3 u3 = velocity_at(x + 0.5 * u2);
+      const Vec3 u4 = velocity_at(x + u3);
+      v_[cell][m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
+    }
+  }
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t i = 0; i < x_.size(); ++i) {
+    for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += v_[i][m];
+    correct_volume(x_[i], membrane_->reference().triangles, membrane_->reference_volume());
   }
 }
 

@@ -61,6 +61,9 @@ class ShearFlowSimulation {
  private:
   void compute_membrane_forces();
   void update_viscosity();
+  // Fluid velocity at the lattice nodes that the cells' kernels can reach this step
+  // (one evaluation of the moments per node instead of one per stencil visit).
+  void update_velocity_field();
   void move_cells();
 
   SimulationCase case_;
@@ -69,6 +72,8 @@ class ShearFlowSimulation {
   std::unique_ptr<CellMembrane> membrane_;
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
+  std::vector<double> u_field_;               // 3 per node, valid where needed_ is set
+  std::vector<unsigned char> needed_;
 };
 
 }  // namespace rbcal::solver
