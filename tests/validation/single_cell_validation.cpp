@@ -151,17 +151,24 @@ SimulationCase single_rbc(double ca) {
   return c;
 }
 
-TEST(SingleRbc, TumblesAtLowCaAndTankTreadsAtHighCa) {
-  SimulationCase stiff = single_rbc(0.05), soft = single_rbc(0.8);
+TEST(SingleRbc, TumblesAtLowCa) {
+  SimulationCase stiff = single_rbc(0.05);
   stiff.strain_end = 20.0;
   stiff.window = {10.0, 20.0};
+  run(stiff, "rbc_lambda5_ca0.05");
+  const double low = inclination_range("validation_runs/rbc_lambda5_ca0.05/series.csv", 2.0);
+  std::cout << "inclination range: " << low << " deg (Ca 0.05)\n";
+  EXPECT_GT(low, 150.0);
+}
+
+// The expectation for high Ca. It FAILS at present (the cell keeps tumbling with
+// strong breathing at Ca = 0.8, lambda = 5): an open item, see docs/validation.md.
+TEST(SingleRbc, TankTreadsOrSwingsAtHighCa) {
+  SimulationCase soft = single_rbc(0.8);
   soft.strain_end = 12.0;
   soft.window = {6.0, 12.0};
-  run(stiff, "rbc_lambda5_ca0.05");
   run(soft, "rbc_lambda5_ca0.8");
-  const double low = inclination_range("validation_runs/rbc_lambda5_ca0.05/series.csv", 2.0);
   const double high = inclination_range("validation_runs/rbc_lambda5_ca0.8/series.csv", 6.0);
-  std::cout << "inclination range: " << low << " deg (Ca 0.05), " << high << " deg (Ca 0.8)\n";
-  EXPECT_GT(low, 150.0);
+  std::cout << "inclination range: " << high << " deg (Ca 0.8)\n";
   EXPECT_LT(high, 90.0);
 }
