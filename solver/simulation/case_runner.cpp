@@ -84,6 +84,12 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
   const auto record_every = std::max<std::int64_t>(1, std::llround(c.record_interval / gamma));
   const std::int64_t vtk_every = c.vtk_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.vtk_interval / gamma)) : 0;
 
+  if (opt.progress) {
+    const double v_cell = sim.positions().empty() ? 0.0 : enclosed_volume(sim.positions()[0], sim.triangles());
+    *opt.progress << "  " << sim.positions().size() << " cells, phi = "
+                  << sim.positions().size() * v_cell / (static_cast<double>(u.nx) * u.ny * u.nz) << ", lattice "
+                  << u.nx << " x " << u.ny << " x " << u.nz << ", " << total_steps << " steps\n";
+  }
   const std::string series_path = opt.output_dir + "/series.csv";
   const std::string checkpoint_path = opt.output_dir + "/checkpoint.bin";
   const std::int64_t checkpoint_every =
