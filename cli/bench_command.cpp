@@ -13,7 +13,9 @@
 #include "bench/lattice_throughput.hpp"
 #include "bench/roofline.hpp"
 #include "cli/commands.hpp"
+#include "cli/json_output.hpp"
 #include "rbcal/build_info.hpp"
+#include "solver/io/provenance.hpp"
 
 namespace rbcal::cli {
 
@@ -27,11 +29,6 @@ struct BenchOptions {
   int threads = 0;
   std::string json_path;
 };
-
-std::string host_name() {
-  char name[256] = {0};
-  return gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string("unknown");
-}
 
 void run_bench(const BenchOptions& o) {
   if (o.box.size() != 3 || o.box[0] < 1 || o.box[1] < 1 || o.box[2] < 1)
@@ -49,7 +46,7 @@ void run_bench(const BenchOptions& o) {
   const double bytes_per_update = bench::LatticeThroughput::bytes_per_update;
 
   std::printf("rbcal bench (rbcal %s, %s build, %d threads, host %s)\n", build_info::git_revision,
-              build_info::build_type, r.threads, host_name().c_str());
+              build_info::build_type, r.threads, solver::host_name().c_str());
   std::printf("  %d alternating rounds; medians over rounds\n", o.rounds);
   std::printf("  STREAM triad (3 x %.0f MiB)      %8.2f GB/s  ordinary stores, 24 B/element counted\n",
               o.triad_mib, r.median_triad * 1e-9);
@@ -70,7 +67,7 @@ void run_bench(const BenchOptions& o) {
     nlohmann::json j;
     j["rbcal_version"] = build_info::version;
     j["git_revision"] = build_info::git_revision;
-    j["host"] = host_name();
+    j["host"] = solver::host_name();
     j["threads"] = r.threads;
     j["box"] = o.box;
     j["steps_per_round"] = o.steps;
@@ -81,9 +78,7 @@ void run_bench(const BenchOptions& o) {
     j["bytes_per_update"] = bytes_per_update;
     j["roofline_fraction"] = r.fraction_of_triad;
     j["roofline_fraction_streaming_triad"] = r.fraction_of_streaming_triad;
-    std::ofstream out(o.json_path);
-    if (!out) throw std::runtime_error("cannot write " + o.json_path);
-    out << j.dump(2) << "\n";
+    write_json(o.json_path, j);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/json_output.hpp"
 #include "solver/fluid/couette_flow.hpp"
 #include "solver/lattice_units.hpp"
 
@@ -85,9 +86,7 @@ void run_couette(const CouetteOptions& o) {
     j["measured_shear_rate_per_s"] = measured_rate;
     j["wall_shear_stress_Pa"] = wall_stress;
     j["viscosity_from_walls_Pa_s"] = measured_viscosity;
-    std::ofstream out(o.json_path);
-    if (!out) throw std::runtime_error("cannot write " + o.json_path);
-    out << j.dump(2) << "\n";
+    write_json(o.json_path, j);
   }
   if (!r.converged) throw std::runtime_error("Couette flow did not reach steady state");
 }

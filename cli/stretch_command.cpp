@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/json_output.hpp"
 #include "rbcal/build_info.hpp"
 #include "solver/membrane/cell_stretching.hpp"
 
@@ -187,9 +188,7 @@ void run_stretch(StretchOptions o) {
                              {"area_change", p.area_change},
                              {"converged", p.converged}});
     if (compare) j["rms_misfit_um"] = rms_misfit(pts, measured);
-    std::ofstream out(o.json_path);
-    if (!out) throw std::runtime_error("cannot write " + o.json_path);
-    out << j.dump(2) << "\n";
+    write_json(o.json_path, j);
   }
   for (const auto& p : pts)
     if (!p.converged) throw std::runtime_error("equilibrium not reached at " + std::to_string(p.force * 1e12) + " pN");

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "rbcal/build_info.hpp"
+#include "solver/io/provenance.hpp"
 #include "solver/io/vtk_writer.hpp"
 #include "solver/simulation/block_average.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
@@ -35,20 +36,6 @@ void write_file_atomically(const std::string& path, const std::string& text) {
 }
 
 namespace {
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  std::ostringstream s;
-  s << std::put_time(&tm, "%Y-%m-%dT%H:%M:%SZ");
-  return s.str();
-}
-
-std::string host_name() {
-  char name[256] = {0};
-  return gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string("unknown");
-}
 
 std::string format_seconds(double s) {
   std::ostringstream o;
