@@ -16,6 +16,7 @@
 #include "cli/json_output.hpp"
 #include "rbcal/build_info.hpp"
 #include "solver/io/provenance.hpp"
+#include "solver/simulation/shear_flow_simulation.hpp"
 
 namespace rbcal::cli {
 
@@ -28,7 +29,43 @@ struct BenchOptions {
   double triad_mib = 1024.0;  // per array; must dwarf the last-level cache (some hosts report 320 MiB)
   int threads = 0;
   std::string json_path;
+  std::string case_path;  // case mode: time the parts of a coupled step
+  int case_steps = 20;
 };
+
+void run_case_bench(const BenchOptions& o) {
+  const solver::SimulationCase c = solver::read_case(o.case_path);
+  solver::ShearFlowSimulation sim(c);
+  for (int s = 0; s < 2; ++s) sim.step();  // warm-up: first touches, field allocation
+  sim.reset_timings();
+  for (int s = 0; s < o.case_steps; ++s) sim.step();
+  const solver::StepTimings& t = sim.timings();
+  const double per = 1e3 / static_cast<double>(t.steps);
+  const double coupling = t.membrane_forces + t.spreading + t.indicator + t.interpolation;
+  std::size_t nodes = 0;
+  for (const auto& x : sim.positions()) nodes += x.size();
+  std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n", o.case_path.c_str(), build_info::git_revision,
+              omp_get_max_threads(), solver::host_name().c_str());
+  std::printf("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps\n", sim.units().nx,
+              sim.units().ny, sim.units().nz, sim.positions().size(), nodes, static_cast<long long>(t.steps));
+  std::printf("  fluid update                 %9.3f ms/step\n", t.fluid * per);
+  std::printf("  membrane forces              %9.3f ms/step\n", t.membrane_forces * per);
+  std::printf("  force spreading              %9.3f ms/step\n", t.spreading * per);
+  std::printf("  inside fraction + viscosity  %9.3f ms/step\n", t.indicator * per);
+  std::printf("  interpolation + node update  %9.3f ms/step\n", t.interpolation * per);
+  std::printf("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling / t.fluid);
+  if (!o.json_path.empty())
+    write_json(o.json_path, {{"case", o.case_path},
+                             {"git_revision", build_info::git_revision},
+                             {"host", solver::host_name()},
+                             {"threads", omp_get_max_threads()},
+                             {"steps", t.steps},
+                             {"seconds", {{"fluid", t.fluid},
+                                          {"membrane_forces", t.membrane_forces},
+                                          {"spreading", t.spreading},
+                                          {"indicator", t.indicator},
+                                          {"interpolation", t.interpolation}}}});
+}
 
 void run_bench(const BenchOptions& o) {
   if (o.box.size() != 3 || o.box[0] < 1 || o.box[1] < 1 || o.box[2] < 1)
@@ -36,6 +73,10 @@ void run_bench(const BenchOptions& o) {
   if (o.steps < 1 || o.rounds < 1) throw std::invalid_argument("--steps and --rounds must be >= 1");
   if (!(o.triad_mib > 0.0)) throw std::invalid_argument("--triad-mib must be positive");
   if (o.threads > 0) omp_set_num_threads(o.threads);
+  if (!o.case_path.empty()) {
+    run_case_bench(o);
+    return;
+  }
 
   bench::RooflineSettings settings;
   settings.box = {o.box[0], o.box[1], o.box[2]};
@@ -99,6 +140,11 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", opts->threads, "OpenMP threads (default: all cores)");
   cmd->add_option("--json", opts->json_path, "Also write the measurements as JSON to this file");
+  cmd->add_option("--case", opts->case_path,
+                  "Case mode: time fluid, membrane, spreading, indicator and interpolation for this case file")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--case-steps", opts->case_steps, "Case mode: timed steps (after 2 warm-up steps)")
+      ->capture_default_str();
   cmd->callback([opts] { run_bench(*opts); });
 }
 

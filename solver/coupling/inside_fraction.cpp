@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 namespace rbcal::solver {
@@ -18,44 +17,73 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 }  // namespace
 
 InsideFraction::InsideFraction(int nx, int ny, int nz, int lines_per_spacing)
-    : nx_(nx), ny_(ny), nz_(nz), sub_(lines_per_spacing), alpha_(static_cast<std::size_t>(nx) * ny * nz, 0.0) {}
+    : nx_(nx),
+      ny_(ny),
+      nz_(nz),
+      sub_(lines_per_spacing),
+      alpha_(static_cast<std::size_t>(nx) * ny * nz, 0.0),
+      marked_(alpha_.size(), 0) {}
 
 double InsideFraction::total() const {
   double s = 0.0;
-  for (std::size_t n : touched_) s += alpha_[n];
+  for (std::size_t n : inside_) s += alpha_[n];
   return s;
 }
 
 void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positions,
                             const std::vector<Triangle>& triangles) {
-  for (std::size_t n : touched_) alpha_[n] = 0.0;
-  previous_.swap(touched_);
-  touched_.clear();
-  for (const auto* x : positions) add_mesh(*x, triangles);
-  std::sort(touched_.begin(), touched_.end());
-  touched_.erase(std::unique(touched_.begin(), touched_.end()), touched_.end());
-  // Nodes that were inside before but not now must also be reported as changed.
-  std::vector<std::size_t> changed;
-  std::set_union(touched_.begin(), touched_.end(), previous_.begin(), previous_.end(), std::back_inserter(changed));
-  touched_.swap(changed);
+  // Clear the previous footprint, then record each node of the new one once (marks).
+  std::vector<std::size_t> previous;
+  previous.reserve(inside_.size());
+  for (std::size_t n : inside_) {
+    alpha_[n] = 0.0;
+    marked_[n] = 0;
+    previous.push_back(n);
+  }
+  inside_.clear();
+  // The scan-line crossings of each mesh are independent (parallel); applying them to
+  // alpha is not (neighbouring cells share boundary nodes), so it runs in order.
+  std::vector<Crossings> all(positions.size());
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t i = 0; i < positions.size(); ++i) all[i] = crossings_of(*positions[i], triangles);
+  for (const Crossings& c : all) apply(c);
+  // Changed nodes: the old footprint and the new (a node may appear in both).
+  touched_ = std::move(previous);
+  touched_.insert(touched_.end(), inside_.begin(), inside_.end());
 }
 
-void InsideFraction::add_mesh(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
+InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& x,
+                                                      const std::vector<Triangle>& triangles) const {
   // Scan lines are numbered on the fine grid: line (p, q) sits at
   // x = (p + 1/2) / S - 1/2 (+ offset), y likewise, and belongs to column floor((p)/S).
   const double h = 1.0 / sub_;
   auto line_x = [&](int p) { return (p + 0.5) * h - 0.5 + kLineOffsetX; };
   auto line_y = [&](int q) { return (q + 0.5) * h - 0.5 + kLineOffsetY; };
-  std::map<std::pair<int, int>, std::vector<std::pair<double, int>>> crossings;
+  // Crossings per scan line, in a flat grid over the mesh's bounding box of lines.
+  double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+  for (const Vec3& v : x) {
+    xmin = std::min(xmin, v.x());
+    xmax = std::max(xmax, v.x());
+    ymin = std::min(ymin, v.y());
+    ymax = std::max(ymax, v.y());
+  }
+  auto first_line = [&](double lo, double offset) { return static_cast<int>(std::ceil((lo + 0.5 - offset) * sub_ - 0.5)); };
+  auto last_line = [&](double hi, double offset) { return static_cast<int>(std::floor((hi + 0.5 - offset) * sub_ - 0.5)); };
+  const int pbase = first_line(xmin, kLineOffsetX), qbase = first_line(ymin, kLineOffsetY);
+  const int pcount = std::max(0, last_line(xmax, kLineOffsetX) - pbase + 1);
+  const int qcount = std::max(0, last_line(ymax, kLineOffsetY) - qbase + 1);
+  Crossings result{pbase, qbase, qcount, {}};
+  auto& crossings = result.lines;
+  crossings.resize(static_cast<std::size_t>(pcount) * qcount);
   for (const Triangle& t : triangles) {
     const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
     const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
     if (area2 == 0.0) continue;  // edge-on to the scan lines
     const int sign = area2 > 0.0 ? -1 : 1;  // normal along +z: leaving the interior
-    const int p0 = static_cast<int>(std::ceil((std::min({a.x(), b.x(), c.x()}) + 0.5 - kLineOffsetX) * sub_ - 0.5));
-    const int p1 = static_cast<int>(std::floor((std::max({a.x(), b.x(), c.x()}) + 0.5 - kLineOffsetX) * sub_ - 0.5));
-    const int q0 = static_cast<int>(std::ceil((std::min({a.y(), b.y(), c.y()}) + 0.5 - kLineOffsetY) * sub_ - 0.5));
-    const int q1 = static_cast<int>(std::floor((std::max({a.y(), b.y(), c.y()}) + 0.5 - kLineOffsetY) * sub_ - 0.5));
+    const int p0 = first_line(std::min({a.x(), b.x(), c.x()}), kLineOffsetX);
+    const int p1 = last_line(std::max({a.x(), b.x(), c.x()}), kLineOffsetX);
+    const int q0 = first_line(std::min({a.y(), b.y(), c.y()}), kLineOffsetY);
+    const int q1 = last_line(std::max({a.y(), b.y(), c.y()}), kLineOffsetY);
     for (int p = p0; p <= p1; ++p)
       for (int q = q0; q <= q1; ++q) {
         const double px = line_x(p), py = line_y(q);
@@ -64,16 +92,24 @@ void InsideFraction::add_mesh(const std::vector<Vec3>& x, const std::vector<Tria
         const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area2;
         const double wc = 1.0 - wa - wb;
         if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-        crossings[{p, q}].emplace_back(wa * a.z() + wb * b.z() + wc * c.z(), sign);
+        crossings[static_cast<std::size_t>(p - pbase) * qcount + (q - qbase)].emplace_back(
+            wa * a.z() + wb * b.z() + wc * c.z(), sign);
       }
   }
-  const double weight = h * h;  // each line stands for 1/S^2 of its column
-  for (auto& [line, list] : crossings) {
-    const auto [p, q] = line;
+  for (auto& list : crossings) std::sort(list.begin(), list.end());
+  return result;
+}
+
+void InsideFraction::apply(const Crossings& c) {
+  const double weight = 1.0 / (sub_ * sub_);  // each line stands for 1/S^2 of its column
+  const int pbase = c.pbase, qbase = c.qbase, qcount = c.qcount;
+  for (std::size_t cell = 0; cell < c.lines.size(); ++cell) {
+    const auto& list = c.lines[cell];
+    if (list.empty()) continue;
+    const int p = pbase + static_cast<int>(cell / qcount), q = qbase + static_cast<int>(cell % qcount);
     const int i = static_cast<int>(std::floor(static_cast<double>(p) / sub_));
     const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
     if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
-    std::sort(list.begin(), list.end());
     const std::size_t column = (static_cast<std::size_t>(wrap(i, nx_)) * ny_ + j) * nz_;
     int winding = 0;
     for (std::size_t m = 0; m + 1 < list.size(); ++m) {
@@ -87,7 +123,10 @@ void InsideFraction::add_mesh(const std::vector<Vec3>& x, const std::vector<Tria
         if (overlap <= 0.0) continue;
         const std::size_t node = column + wrap(k, nz_);
         alpha_[node] = std::min(1.0, alpha_[node] + weight * overlap);
-        touched_.push_back(node);
+        if (!marked_[node]) {
+          marked_[node] = 1;
+          inside_.push_back(node);
+        }
       }
     }
   }

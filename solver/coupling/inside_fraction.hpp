@@ -13,6 +13,7 @@
 // Lines are offset by a fixed irrational fraction of a spacing so that no line passes
 // exactly through a mesh vertex or edge. Periodic in x and z: meshes must be given in
 // unwrapped coordinates (no jump across the box).
+#include <utility>
 #include <vector>
 
 #include "solver/membrane/triangle_mesh.hpp"
@@ -27,18 +28,26 @@ class InsideFraction {
   void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<Triangle>& triangles);
 
   const std::vector<double>& alpha() const { return alpha_; }
-  // Nodes whose alpha changed in the last update (for incremental viscosity updates).
+  // Nodes whose alpha may have changed in the last update (for incremental viscosity
+  // updates); a node can be listed twice.
   const std::vector<std::size_t>& touched() const { return touched_; }
   double total() const;
 
  private:
-  void add_mesh(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+  // Sorted, signed z-crossings of one mesh on the scan lines of its bounding box.
+  struct Crossings {
+    int pbase = 0, qbase = 0, qcount = 0;                  // first line indices, lines along y
+    std::vector<std::vector<std::pair<double, int>>> lines;  // (z, +1 entering / -1 leaving)
+  };
+  Crossings crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) const;
+  void apply(const Crossings& c);
 
   int nx_, ny_, nz_;
   int sub_;  // scan lines per lattice spacing in x and in y
   std::vector<double> alpha_;
+  std::vector<std::size_t> inside_;  // nodes with alpha > 0, each once
+  std::vector<unsigned char> marked_;  // 1 for the nodes in inside_
   std::vector<std::size_t> touched_;
-  std::vector<std::size_t> previous_;
 };
 
 }  // namespace rbcal::solver

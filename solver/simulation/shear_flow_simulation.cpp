@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -177,12 +178,25 @@ void ShearFlowSimulation::move_cells() {
 }
 
 void ShearFlowSimulation::step() {
+  using clock = std::chrono::steady_clock;
+  auto t = clock::now();
+  auto lap = [&](double& into) {
+    const auto now = clock::now();
+    into += std::chrono::duration<double>(now - t).count();
+    t = now;
+  };
   compute_membrane_forces();
+  lap(timings_.membrane_forces);
   fluid_.clear_force();
   for (std::size_t i = 0; i < x_.size(); ++i) spread_forces(case_.kernel, x_[i], f_[i], fluid_);
+  lap(timings_.spreading);
   update_viscosity();
+  lap(timings_.indicator);
   fluid_.step();
+  lap(timings_.fluid);
   move_cells();
+  lap(timings_.interpolation);
+  ++timings_.steps;
 }
 
 void ShearFlowSimulation::save_checkpoint(const std::string& path) const {

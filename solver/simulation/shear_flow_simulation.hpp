@@ -26,6 +26,16 @@ struct CellObservables {
   Vec3 centroid;              // in a, relative to the box centre
 };
 
+// Wall-clock seconds spent in each part of step(), accumulated since the last reset.
+struct StepTimings {
+  double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
+  double spreading = 0.0;        // clearing the force field and spreading to the lattice
+  double indicator = 0.0;        // inside fraction and viscosity field
+  double fluid = 0.0;            // lattice Boltzmann stream + collide
+  double interpolation = 0.0;    // velocity field, interpolation, node update, volume correction
+  std::int64_t steps = 0;
+};
+
 struct Observables {
   double strain = 0.0;            // gamma_dot t
   double eta_re_stresslet = 1.0;  // 1 + Sigma_p[z][y] / (eta0 gamma_dot)
@@ -40,6 +50,9 @@ class ShearFlowSimulation {
 
   void step();
   Observables observe() const;
+
+  const StepTimings& timings() const { return timings_; }
+  void reset_timings() { timings_ = StepTimings{}; }
 
   // Checkpoints (checkpoint.hpp): restoring continues bit-identically.
   void save_checkpoint(const std::string& path) const;
@@ -73,6 +86,7 @@ class ShearFlowSimulation {
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
   std::vector<double> u_field_;               // 3 per node, valid where needed_ is set
+  StepTimings timings_;
   std::vector<unsigned char> needed_;
 };
 
