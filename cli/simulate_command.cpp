@@ -30,7 +30,7 @@ void run_simulate(const SimulateOptions& o) {
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
   if (!j.contains("result")) {
-    std::cout << "rbcal simulate: stopped at strain " << j["strain"].get<double>() << " after --max-steps; "
+    std::cout << "rbcal simulate: stopped at strain " << j["strain"].get<double>() << " (--max-steps or a signal); "
               << "checkpoint " << j["checkpoint"].get<std::string>() << " (continue with --resume)\n";
     return;
   }

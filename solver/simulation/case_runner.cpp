@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -36,6 +37,10 @@ void write_file_atomically(const std::string& path, const std::string& text) {
 }
 
 namespace {
+
+// Set by SIGINT / SIGTERM: the run stops at the next step with a checkpoint.
+volatile std::sig_atomic_t stop_requested = 0;
+extern "C" void request_stop(int) { stop_requested = 1; }
 
 std::string format_seconds(double s) {
   std::ostringstream o;
@@ -131,6 +136,17 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
   };
   if (vtk_every && first_step == 1) snapshot(0);
 
+  stop_requested = 0;
+  auto previous_int = std::signal(SIGINT, request_stop);
+  auto previous_term = std::signal(SIGTERM, request_stop);
+  struct RestoreSignals {
+    decltype(previous_int) i, t;
+    ~RestoreSignals() {
+      std::signal(SIGINT, i);
+      std::signal(SIGTERM, t);
+    }
+  } restore_signals{previous_int, previous_term};
+
   auto last_report = std::chrono::steady_clock::now();
   for (std::int64_t step = first_step; step <= total_steps; ++step) {
     sim.step();
@@ -152,7 +168,8 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
       keep_for_window(o.strain, o.eta_re_stresslet, o.eta_re_wall, d, angle);
     }
     if (vtk_every && step % vtk_every == 0) snapshot(step);
-    const bool stop_now = opt.max_steps > 0 && step - first_step + 1 >= opt.max_steps && step < total_steps;
+    const bool stop_now =
+        step < total_steps && (stop_requested || (opt.max_steps > 0 && step - first_step + 1 >= opt.max_steps));
     if ((checkpoint_every && step % checkpoint_every == 0) || stop_now) {
       series.flush();
       sim.save_checkpoint(checkpoint_path);

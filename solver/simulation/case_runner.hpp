@@ -10,7 +10,8 @@
 // cell and the step if the state turns non-finite or the Mach number exceeds 0.3, after
 // writing checkpoint_failed.bin. With resume, a run continues from checkpoint.bin: the
 // series is cut back to the checkpoint and the averages rebuilt from it, so a run killed
-// at any moment loses at most the work since its last checkpoint.
+// at any moment loses at most the work since its last checkpoint. SIGINT and SIGTERM
+// (Ctrl-C, a scheduler's warning) stop the run after the current step with a checkpoint.
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,8 +28,8 @@ struct RunOptions {
   std::int64_t max_steps = 0;        // stop after this many steps, with a checkpoint (0: run to the end)
 };
 
-// Returns the result JSON (also written to result.json), or, when max_steps stopped the
-// run early, {"status": "interrupted", "strain": ...} with the checkpoint written.
+// Returns the result JSON (also written to result.json), or, when max_steps or a signal
+// stopped the run early, {"status": "interrupted", "strain": ...} with the checkpoint written.
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& options);
 
 // Writes text to path via a temporary file and a rename, so that readers never see a
