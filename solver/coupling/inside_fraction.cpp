@@ -60,13 +60,8 @@ InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& 
   auto line_x = [&](int p) { return (p + 0.5) * h - 0.5 + kLineOffsetX; };
   auto line_y = [&](int q) { return (q + 0.5) * h - 0.5 + kLineOffsetY; };
   // Crossings per scan line, in a flat grid over the mesh's bounding box of lines.
-  double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-  for (const Vec3& v : x) {
-    xmin = std::min(xmin, v.x());
-    xmax = std::max(xmax, v.x());
-    ymin = std::min(ymin, v.y());
-    ymax = std::max(ymax, v.y());
-  }
+  const Bounds box = bounding_box(x);
+  const double xmin = box.lo.x(), xmax = box.hi.x(), ymin = box.lo.y(), ymax = box.hi.y();
   auto first_line = [&](double lo, double offset) { return static_cast<int>(std::ceil((lo + 0.5 - offset) * sub_ - 0.5)); };
   auto last_line = [&](double hi, double offset) { return static_cast<int>(std::floor((hi + 0.5 - offset) * sub_ - 0.5)); };
   const int pbase = first_line(xmin, kLineOffsetX), qbase = first_line(ymin, kLineOffsetY);

@@ -88,15 +88,9 @@ std::vector<StretchPoint> stretch_cell(const StretchSettings& s, const std::vect
       multiplier += penalty * c;
     }
     const std::vector<Vec3> pos = unpack(x);
-    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-    for (const Vec3& p : pos) {
-      xmin = std::min(xmin, p.x());
-      xmax = std::max(xmax, p.x());
-      ymin = std::min(ymin, p.y());
-      ymax = std::max(ymax, p.y());
-    }
-    point.axial_diameter = (xmax - xmin) * s.radius;
-    point.transverse_diameter = (ymax - ymin) * s.radius;
+    const Bounds box = bounding_box(pos);
+    point.axial_diameter = (box.hi.x() - box.lo.x()) * s.radius;
+    point.transverse_diameter = (box.hi.y() - box.lo.y()) * s.radius;
     point.volume_error = c;
     point.area_change = surface_area(pos, reference.triangles) / a0 - 1.0;
     point.converged = point.converged && std::abs(c) < s.volume_tolerance;

@@ -25,6 +25,16 @@ Vec3 vertex_centroid(const std::vector<Vec3>& x) {
   return sum / static_cast<double>(x.size());
 }
 
+Bounds bounding_box(const std::vector<Vec3>& x) {
+  if (x.empty()) return {Vec3::Zero(), Vec3::Zero()};
+  Bounds b{x[0], x[0]};
+  for (const Vec3& p : x) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
 std::vector<Hinge> build_hinges(const TriangleMesh& mesh) {
   // Directed edge (from, to) -> the vertex opposite it in its triangle.
   std::map<std::pair<int, int>, int> opposite_of;

@@ -28,6 +28,12 @@ double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& 
 double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 Vec3 vertex_centroid(const std::vector<Vec3>& x);
 
+// Axis-aligned bounding box of a point set (lo = hi = 0 for an empty set).
+struct Bounds {
+  Vec3 lo, hi;
+};
+Bounds bounding_box(const std::vector<Vec3>& x);
+
 // Every edge's hinge; throws std::invalid_argument unless the mesh is a closed, consistently
 // oriented two-manifold (each edge shared by exactly two triangles in opposite directions).
 std::vector<Hinge> build_hinges(const TriangleMesh& mesh);

@@ -114,11 +114,7 @@ void ShearFlowSimulation::update_velocity_field() {
   // Bounding box of each cell, widened by the kernel reach and one step of motion.
   const int reach = kernel_support(case_.kernel) / 2 + 2;
   for (const auto& x : x_) {
-    Vec3 lo = x[0], hi = x[0];
-    for (const Vec3& p : x) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
+    const auto [lo, hi] = bounding_box(x);
     const int x0 = static_cast<int>(std::floor(lo.x())) - reach, x1 = static_cast<int>(std::ceil(hi.x())) + reach;
     const int y0 = std::max(0, static_cast<int>(std::floor(lo.y())) - reach);
     const int y1 = std::min(ny - 1, static_cast<int>(std::ceil(hi.y())) + reach);
