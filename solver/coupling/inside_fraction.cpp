@@ -61,15 +61,14 @@ InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& 
   auto line_y = [&](int q) { return (q + 0.5) * h - 0.5 + kLineOffsetY; };
   // Crossings per scan line, in a flat grid over the mesh's bounding box of lines.
   const Bounds box = bounding_box(x);
-  const double xmin = box.lo.x(), xmax = box.hi.x(), ymin = box.lo.y(), ymax = box.hi.y();
+  const double xmin = box.lo.x(), ymin = box.lo.y(), ymax = box.hi.y();
   auto first_line = [&](double lo, double offset) { return static_cast<int>(std::ceil((lo + 0.5 - offset) * sub_ - 0.5)); };
   auto last_line = [&](double hi, double offset) { return static_cast<int>(std::floor((hi + 0.5 - offset) * sub_ - 0.5)); };
   const int pbase = first_line(xmin, kLineOffsetX), qbase = first_line(ymin, kLineOffsetY);
-  const int pcount = std::max(0, last_line(xmax, kLineOffsetX) - pbase + 1);
   const int qcount = std::max(0, last_line(ymax, kLineOffsetY) - qbase + 1);
   Crossings result{pbase, qbase, qcount, {}};
-  auto& crossings = result.lines;
-  crossings.resize(static_cast<std::size_t>(pcount) * qcount);
+  auto& hits = result.hits;
+  hits.reserve(2 * triangles.size());
   for (const Triangle& t : triangles) {
     const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
     const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
@@ -87,31 +86,32 @@ InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& 
         const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area2;
         const double wc = 1.0 - wa - wb;
         if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-        crossings[static_cast<std::size_t>(p - pbase) * qcount + (q - qbase)].emplace_back(
-            wa * a.z() + wb * b.z() + wc * c.z(), sign);
+        hits.push_back({(p - pbase) * qcount + (q - qbase), wa * a.z() + wb * b.z() + wc * c.z(), sign});
       }
   }
-  for (auto& list : crossings) std::sort(list.begin(), list.end());
+  std::sort(hits.begin(), hits.end(),
+            [](const Hit& u, const Hit& v) { return u.line != v.line ? u.line < v.line : u.z < v.z; });
   return result;
 }
 
 void InsideFraction::apply(const Crossings& c) {
   const double weight = 1.0 / (sub_ * sub_);  // each line stands for 1/S^2 of its column
   const int pbase = c.pbase, qbase = c.qbase, qcount = c.qcount;
-  for (std::size_t cell = 0; cell < c.lines.size(); ++cell) {
-    const auto& list = c.lines[cell];
-    if (list.empty()) continue;
-    const int p = pbase + static_cast<int>(cell / qcount), q = qbase + static_cast<int>(cell % qcount);
+  for (std::size_t begin = 0, end = 0; begin < c.hits.size(); begin = end) {
+    end = begin;
+    while (end < c.hits.size() && c.hits[end].line == c.hits[begin].line) ++end;
+    const int line = c.hits[begin].line;
+    const int p = pbase + line / qcount, q = qbase + line % qcount;
     const int i = static_cast<int>(std::floor(static_cast<double>(p) / sub_));
     const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
     if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
     const std::size_t column = (static_cast<std::size_t>(wrap(i, nx_)) * ny_ + j) * nz_;
     int winding = 0;
-    for (std::size_t m = 0; m + 1 < list.size(); ++m) {
-      winding += list[m].second;
+    for (std::size_t m = begin; m + 1 < end; ++m) {
+      winding += c.hits[m].sign;
       if (winding <= 0) continue;
       // [z0, z1] is inside: give each node k the overlap with [k - 1/2, k + 1/2].
-      const double z0 = list[m].first, z1 = list[m + 1].first;
+      const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
       const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
       for (int k = k0; k <= k1; ++k) {
         const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);

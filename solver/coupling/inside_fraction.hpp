@@ -34,10 +34,16 @@ class InsideFraction {
   double total() const;
 
  private:
-  // Sorted, signed z-crossings of one mesh on the scan lines of its bounding box.
+  // Signed z-crossings of one mesh on the scan lines of its bounding box, sorted by
+  // line, then z.
+  struct Hit {
+    int line;  // (p - pbase) * qcount + (q - qbase)
+    double z;
+    int sign;  // +1 entering, -1 leaving
+  };
   struct Crossings {
-    int pbase = 0, qbase = 0, qcount = 0;                  // first line indices, lines along y
-    std::vector<std::vector<std::pair<double, int>>> lines;  // (z, +1 entering / -1 leaving)
+    int pbase = 0, qbase = 0, qcount = 0;  // first line indices, lines along y
+    std::vector<Hit> hits;
   };
   Crossings crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) const;
   void apply(const Crossings& c);
