@@ -10,8 +10,8 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 // First node of the support and the weights along one direction.
 void weights_1d(KernelKind kernel, double r, int support, int& first, std::array<double, 4>& w) {
-  first = static_cast<int>(std::floor(r)) - (support - 1) / 2;
-  if (support == 3) first = static_cast<int>(std::lround(r)) - 1;
+  // Even supports straddle r; the 3-point one is centred on the nearest node.
+  first = support == 3 ? static_cast<int>(std::lround(r)) - 1 : static_cast<int>(std::floor(r)) - (support - 1) / 2;
   for (int i = 0; i < support; ++i) w[i] = kernel_weight(kernel, r - (first + i));
 }
 

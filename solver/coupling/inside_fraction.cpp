@@ -24,12 +24,6 @@ InsideFraction::InsideFraction(int nx, int ny, int nz, int lines_per_spacing)
       alpha_(static_cast<std::size_t>(nx) * ny * nz, 0.0),
       marked_(alpha_.size(), 0) {}
 
-double InsideFraction::total() const {
-  double s = 0.0;
-  for (std::size_t n : inside_) s += alpha_[n];
-  return s;
-}
-
 void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positions,
                             const std::vector<Triangle>& triangles) {
   // Clear the previous footprint, then record each node of the new one once (marks).

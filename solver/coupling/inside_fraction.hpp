@@ -31,7 +31,6 @@ class InsideFraction {
   // Nodes whose alpha may have changed in the last update (for incremental viscosity
   // updates); a node can be listed twice.
   const std::vector<std::size_t>& touched() const { return touched_; }
-  double total() const;
 
  private:
   // Signed z-crossings of one mesh on the scan lines of its bounding box, sorted by
