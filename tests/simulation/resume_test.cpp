@@ -40,14 +40,15 @@ SimulationCase small_case() {
 
 TEST(Resume, InterruptedAndResumedRunEqualsStraightRun) {
   namespace fs = std::filesystem;
-  fs::remove_all("resume_straight");
-  fs::remove_all("resume_interrupted");
+  // Outside the source tree, whatever directory the test is started from.
+  const fs::path root = fs::temp_directory_path() / "rbcal_resume_test";
+  fs::remove_all(root);
   RunOptions straight;
-  straight.output_dir = "resume_straight";
+  straight.output_dir = (root / "straight").string();
   const nlohmann::json a = run_case(small_case(), straight);
 
   RunOptions part;
-  part.output_dir = "resume_interrupted";
+  part.output_dir = (root / "interrupted").string();
   part.max_steps = 37;  // between checkpoints and records
   const nlohmann::json stopped = run_case(small_case(), part);
   ASSERT_EQ(stopped["status"], "interrupted");
@@ -58,5 +59,7 @@ TEST(Resume, InterruptedAndResumedRunEqualsStraightRun) {
   EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
   EXPECT_EQ(a["result"]["eta_re_wall"].get<double>(), b["result"]["eta_re_wall"].get<double>());
   EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
-  EXPECT_EQ(slurp("resume_straight/series.csv"), slurp("resume_interrupted/series.csv"));
+  EXPECT_EQ(slurp((root / "straight" / "series.csv").string()),
+            slurp((root / "interrupted" / "series.csv").string()));
+  fs::remove_all(root);
 }

@@ -1,0 +1,33 @@
+#pragma once
+// What the calibration needs from a model of the suspension's relative viscosity:
+// eta_re(phi, Ca, lambda) with a predictive standard deviation and derivatives.
+// The Gaussian-process surrogate implements it; tests implement it with known
+// analytic functions. All quantities are dimensionless (DESIGN.md section 2).
+
+namespace rbcal::surrogate {
+
+struct ViscosityPrediction {
+  double eta_re = 1.0;       // predicted relative viscosity eta / eta0
+  double sd = 0.0;           // predictive standard deviation of eta_re (model uncertainty only)
+  double d_phi = 0.0;        // d eta_re / d phi
+  double d_ln_ca = 0.0;      // d eta_re / d ln Ca
+  double d_ln_lambda = 0.0;  // d eta_re / d ln lambda
+  bool inside_hull = true;   // false where the query leaves the range the model was built on
+};
+
+// The box of (phi, Ca, lambda) the model was built on.
+struct ParameterRange {
+  double phi_min = 0.0, phi_max = 0.0;
+  double ca_min = 0.0, ca_max = 0.0;
+  double lambda_min = 0.0, lambda_max = 0.0;
+};
+
+class ViscosityModel {
+ public:
+  virtual ~ViscosityModel() = default;
+  // phi: volume fraction, capillary_number: Ca = eta0 gamma_dot a / G_s, viscosity_ratio: lambda = eta1 / eta0.
+  virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
+  virtual ParameterRange range() const = 0;
+};
+
+}  // namespace rbcal::surrogate
