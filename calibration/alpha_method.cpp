@@ -1,0 +1,164 @@
+#include "calibration/alpha_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rbcal::calibration {
+
+namespace {
+
+ShearModulusSummary summarise(const std::vector<AlphaMatch>& matches) {
+  ShearModulusSummary s;
+  double sum = 0.0;
+  for (const auto& m : matches)
+    if (m.matched) {
+      sum += m.shear_modulus;
+      ++s.count;
+    }
+  if (s.count == 0) return s;
+  s.mean = sum / s.count;
+  if (s.count > 1) {
+    double squares = 0.0;
+    for (const auto& m : matches)
+      if (m.matched) squares += (m.shear_modulus - s.mean) * (m.shear_modulus - s.mean);
+    s.sd = std::sqrt(squares / (s.count - 1));
+    s.standard_error = s.sd / std::sqrt(static_cast<double>(s.count));
+  }
+  return s;
+}
+
+// Picks the crossing and writes the message; false if there is none.
+bool pick_crossing(const std::vector<double>& crossings, const std::string& what, double* x, std::string* message) {
+  if (crossings.empty()) {
+    *message = what;
+    return false;
+  }
+  *x = crossings.front();
+  if (crossings.size() > 1)
+    *message = std::to_string(crossings.size()) + " crossings of alpha (alpha not monotone); the first is used";
+  return true;
+}
+
+}  // namespace
+
+std::vector<double> level_crossings(const std::vector<double>& x, const std::vector<double>& y, double target) {
+  std::vector<double> result;
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+    const double a = y[i] - target, b = y[i + 1] - target;
+    if (a == 0.0) {
+      result.push_back(x[i]);
+    } else if (a * b < 0.0) {
+      result.push_back(x[i] + (x[i + 1] - x[i]) * a / (a - b));
+    }
+  }
+  if (!x.empty() && y.back() == target) result.push_back(x.back());
+  return result;
+}
+
+AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const surrogate::ViscosityModel& model,
+                                             const AlphaMethodOptions& options) {
+  AlphaMethodResult result;
+  const double eta0 = sample.plasma.eta0;
+  result.plasma_viscosity = eta0;
+
+  // Measured alpha per shear rate (shear rates equal to 1e-9 relative are one group).
+  std::vector<RelativeViscosityPoint> points;
+  for (const auto& p : sample.points)
+    if (p.phi >= options.phi_min && p.phi <= options.phi_max) points.push_back(p);
+  std::sort(points.begin(), points.end(),
+            [](const auto& a, const auto& b) { return a.shear_rate < b.shear_rate; });
+  for (std::size_t begin = 0; begin < points.size();) {
+    std::size_t end = begin;
+    std::vector<double> phi, eta_re;
+    while (end < points.size() && points[end].shear_rate <= points[begin].shear_rate * (1.0 + 1e-9)) {
+      phi.push_back(points[end].phi);
+      eta_re.push_back(points[end].eta_re);
+      ++end;
+    }
+    if (static_cast<int>(phi.size()) >= options.min_points_per_shear_rate) {
+      result.measured.push_back({points[begin].shear_rate, fit_exponential_alpha(phi, eta_re, options.fit_space)});
+    } else {
+      std::ostringstream m;
+      m << "shear rate " << points[begin].shear_rate << " 1/s skipped: " << phi.size()
+        << " volume fraction(s) within the cut-offs, need " << options.min_points_per_shear_rate;
+      result.messages.push_back(m.str());
+    }
+    begin = end;
+  }
+
+  // Model alpha per Ca on a ln-uniform grid, fitted to the model at a phi grid.
+  const surrogate::ParameterRange range = model.range();
+  const double phi_lo = std::max(range.phi_min, options.phi_min);
+  const double phi_hi = std::min(range.phi_max, options.phi_max);
+  std::vector<double> model_phi;
+  for (int i = 0; i < options.model_phi_points; ++i)
+    model_phi.push_back(phi_lo + (phi_hi - phi_lo) * i / std::max(1, options.model_phi_points - 1));
+  auto model_alpha = [&](double ca) {
+    std::vector<double> eta_re;
+    for (double phi : model_phi) eta_re.push_back(model.predict(phi, ca, options.lambda).eta_re);
+    return fit_exponential_alpha(model_phi, eta_re, options.fit_space);
+  };
+  std::vector<double> ln_ca, alpha_of_ln_ca;
+  for (int i = 0; i < options.model_ca_points; ++i) {
+    const double x = std::log(range.ca_min) +
+                     (std::log(range.ca_max) - std::log(range.ca_min)) * i / std::max(1, options.model_ca_points - 1);
+    const double ca = std::exp(x);
+    result.model.push_back({ca, model_alpha(ca)});
+    ln_ca.push_back(x);
+    alpha_of_ln_ca.push_back(result.model.back().fit.alpha);
+  }
+
+  // Measured shear rate -> Ca with the same model alpha (linear in ln Ca) -> G_s.
+  for (const auto& m : result.measured) {
+    AlphaMatch match;
+    match.shear_rate = m.shear_rate;
+    match.alpha = m.fit.alpha;
+    double x = 0.0;
+    std::ostringstream why;
+    why << "alpha " << m.fit.alpha << " is outside the model's alpha over Ca in [" << range.ca_min << ", "
+        << range.ca_max << "]";
+    if (pick_crossing(level_crossings(ln_ca, alpha_of_ln_ca, m.fit.alpha), why.str(), &x, &match.message)) {
+      match.matched = true;
+      match.capillary_number = std::exp(x);
+      match.shear_modulus =
+          shear_modulus_from_capillary_number(eta0, m.shear_rate, options.cell_radius, match.capillary_number);
+    }
+    result.per_shear_rate.push_back(match);
+  }
+
+  // The seed study's direction: model Ca -> shear rate with the same measured alpha (linear in ln gamma_dot).
+  std::vector<double> ln_rate, measured_alpha;
+  for (const auto& m : result.measured) {
+    ln_rate.push_back(std::log(m.shear_rate));
+    measured_alpha.push_back(m.fit.alpha);
+  }
+  for (double ca : options.capillary_numbers) {
+    AlphaMatch match;
+    match.capillary_number = ca;
+    if (ca < range.ca_min || ca > range.ca_max) {
+      std::ostringstream m;
+      m << "Ca " << ca << " is outside the model's range [" << range.ca_min << ", " << range.ca_max << "]";
+      match.message = m.str();
+      result.per_capillary_number.push_back(match);
+      continue;
+    }
+    match.alpha = model_alpha(ca).alpha;
+    double x = 0.0;
+    std::ostringstream why;
+    why << "model alpha " << match.alpha << " at Ca " << ca << " is outside the measured alphas";
+    if (pick_crossing(level_crossings(ln_rate, measured_alpha, match.alpha), why.str(), &x, &match.message)) {
+      match.matched = true;
+      match.shear_rate = std::exp(x);
+      match.shear_modulus = shear_modulus_from_capillary_number(eta0, match.shear_rate, options.cell_radius, ca);
+    }
+    result.per_capillary_number.push_back(match);
+  }
+  result.shear_modulus = summarise(result.per_shear_rate);
+  result.shear_modulus_per_ca = summarise(result.per_capillary_number);
+  if (result.shear_modulus.count == 0)
+    result.messages.push_back("no measured shear rate could be matched to a Ca of the model");
+  return result;
+}
+
+}  // namespace rbcal::calibration

@@ -1,0 +1,41 @@
+#pragma once
+// What every calibration method works on: per sample, the plasma viscosity and the relative
+// viscosities eta_re = eta / eta0 of its suspension rows with propagated errors (DESIGN.md section 5).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "calibration/plasma_viscosity.hpp"
+#include "calibration/rheometer_data.hpp"
+
+namespace rbcal::calibration {
+
+struct RelativeViscosityPoint {
+  double phi = 0.0;         // volume fraction
+  double shear_rate = 0.0;  // [1/s]
+  double eta_re = 1.0;      // eta / eta0
+  // Standard deviation of eta_re: first-order propagation of the standard error of the mean
+  // viscosity (sd / sqrt(n)) and of eta0's standard error, treated as independent:
+  // sd(eta_re) = eta_re * sqrt((se_eta / eta)^2 + (se_eta0 / eta0)^2).
+  double eta_re_sd = 0.0;
+  int line = 0;  // source line, 0 for synthetic points
+};
+
+struct SampleData {
+  std::string name;
+  PlasmaViscosity plasma;
+  std::vector<RelativeViscosityPoint> points;  // suspension rows, in file order
+};
+
+struct CalibrationInput {
+  std::string source;
+  std::vector<std::string> provenance;
+  std::vector<SampleData> samples;  // in order of first appearance
+  // Throws std::out_of_range with the known names if there is no such sample.
+  const SampleData& sample(const std::string& name) const;
+};
+
+CalibrationInput make_calibration_input(const RheometerData& data, const PlasmaViscosityOptions& options = {});
+CalibrationInput read_calibration_input(const std::filesystem::path& csv, const PlasmaViscosityOptions& options = {});
+
+}  // namespace rbcal::calibration

@@ -1,0 +1,67 @@
+#pragma once
+// Direct fit of ln G_s (optionally ln lambda) to all eta_re(phi, gamma_dot) points inside the
+// model's range by weighted least squares (Ceres), with a Laplace (Gauss-Newton) covariance.
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "calibration/calibration_input.hpp"
+#include "calibration/capillary_number.hpp"
+#include "calibration/quantiles.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::calibration {
+
+enum class RobustLoss { none, huber, cauchy };
+
+struct DirectFitOptions {
+  double cell_radius = kDefaultCellRadius;  // a [m]
+  double lambda = 5.0;                      // fixed viscosity ratio, or the start when fit_lambda
+  bool fit_lambda = false;
+  double shear_modulus_min = 1e-8;  // bounds on G_s [N/m]; ln lambda is bounded by the model's range
+  double shear_modulus_max = 1e-3;
+  RobustLoss loss = RobustLoss::none;
+  double loss_scale = 2.0;  // in units of the weighted residual (standard deviations)
+  double interval_level = 0.95;
+  int start_grid_points = 41;   // ln-uniform scan of G_s for the starting point
+  int max_selection_rounds = 5;  // refits while the set of points inside the model's range changes
+  // Multiply the covariance by chi^2 / dof (when the stated errors are not trusted).
+  bool scale_covariance_by_reduced_chi_square = false;
+};
+
+struct FittedPoint {
+  RelativeViscosityPoint point;
+  bool used = false;
+  std::string reason;              // why not used
+  double capillary_number = 0.0;   // at the estimate
+  double predicted_eta_re = 0.0;   // model at the estimate
+  double predicted_sd = 0.0;       // model's predictive sd at the estimate
+  double weighted_residual = 0.0;  // (eta_re - predicted) / sqrt(eta_re_sd^2 + predicted_sd^2)
+};
+
+struct DirectFitResult {
+  std::vector<std::string> parameter_names;  // "ln_G_s" and, when fitted, "ln_lambda"
+  Eigen::VectorXd estimate;                  // in that order
+  Eigen::MatrixXd covariance;                // Laplace covariance of the estimate
+  bool covariance_ok = false;                // false: Covariance::Compute failed (rank deficient)
+  double shear_modulus = 0.0;                // exp(ln G_s) [N/m]
+  double ln_shear_modulus_sd = 0.0;
+  Interval shear_modulus_interval;           // exp of the normal interval on ln G_s [N/m]
+  double lambda = 0.0;                       // fitted or fixed
+  Interval lambda_interval;                  // when fitted
+  bool at_bound = false;                     // an estimate sits on a bound: interval unreliable
+  bool converged = false;
+  double chi_square = 0.0;  // sum of squared weighted residuals over used points
+  int degrees_of_freedom = 0;
+  double plasma_viscosity = 0.0;  // eta0 used [Pa s]
+  std::vector<FittedPoint> points;
+  std::vector<std::string> messages;
+  std::string solver_report;  // Ceres' brief report of the last solve
+};
+
+// Throws std::invalid_argument when fewer points than parameters lie in the model's range.
+DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
+                           const DirectFitOptions& options = {});
+
+}  // namespace rbcal::calibration

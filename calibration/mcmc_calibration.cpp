@@ -1,0 +1,69 @@
+#include "calibration/mcmc_calibration.hpp"
+
+#include <cmath>
+
+namespace rbcal::calibration {
+
+namespace {
+
+Interval exp_interval(const Interval& i) { return {std::exp(i.lower), std::exp(i.upper), i.level}; }
+
+}  // namespace
+
+std::vector<double> McmcCalibration::shear_modulus_draws() const {
+  std::vector<double> draws = mcmc.parameter_draws(0);
+  for (double& x : draws) x = std::exp(x);
+  return draws;
+}
+
+McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::ViscosityModel& model,
+                               const McmcCalibrationOptions& options) {
+  McmcCalibration out;
+  out.plasma_viscosity = sample.plasma.eta0;
+  DirectFitOptions fit_options = options.start_fit;
+  fit_options.cell_radius = options.posterior.cell_radius;
+  fit_options.lambda = options.posterior.lambda;
+  fit_options.fit_lambda = options.posterior.fit_lambda;
+  fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
+  fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
+  out.start_fit = fit_direct(sample, model, fit_options);
+  for (const auto& f : out.start_fit.points)
+    if (f.used) out.points.push_back(f.point);
+
+  const LogPosterior posterior(model, sample.plasma.eta0, out.points, options.posterior);
+  out.posterior = posterior.options();
+  const int d = posterior.dimension();
+  McmcStart start{Eigen::VectorXd::Zero(d), Eigen::VectorXd::Constant(d, 0.1)};
+  start.center(0) = out.start_fit.estimate(0);
+  if (out.start_fit.covariance_ok) start.scale(0) = std::sqrt(out.start_fit.covariance(0, 0));
+  if (posterior.lambda_index() >= 0) {
+    start.center(posterior.lambda_index()) = out.start_fit.estimate(1);
+    if (out.start_fit.covariance_ok) start.scale(posterior.lambda_index()) = std::sqrt(out.start_fit.covariance(1, 1));
+  }
+  if (posterior.discrepancy_index() >= 0) {
+    start.center(posterior.discrepancy_index()) = std::log(options.posterior.discrepancy_prior_median);
+    start.scale(posterior.discrepancy_index()) = 0.3 * options.posterior.discrepancy_prior_log_sd;
+  }
+  for (int p = 0; p < d; ++p)
+    if (!(start.scale(p) > 0.0) || !std::isfinite(start.scale(p))) start.scale(p) = 0.1;
+  out.mcmc = sample_posterior([&posterior](const Eigen::VectorXd& theta) { return posterior(theta); },
+                              posterior.parameter_names(), start, options.sampler);
+
+  const auto& summaries = out.mcmc.parameters;
+  out.shear_modulus_median = std::exp(summaries[0].median);
+  out.shear_modulus_interval = exp_interval(summaries[0].interval);
+  if (posterior.lambda_index() >= 0) {
+    out.lambda_median = std::exp(summaries[posterior.lambda_index()].median);
+    out.lambda_interval = exp_interval(summaries[posterior.lambda_index()].interval);
+  } else {
+    out.lambda_median = options.posterior.lambda;
+    out.lambda_interval = {out.lambda_median, out.lambda_median, options.sampler.interval_level};
+  }
+  if (posterior.discrepancy_index() >= 0) {
+    out.discrepancy_median = std::exp(summaries[posterior.discrepancy_index()].median);
+    out.discrepancy_interval = exp_interval(summaries[posterior.discrepancy_index()].interval);
+  }
+  return out;
+}
+
+}  // namespace rbcal::calibration

@@ -1,0 +1,40 @@
+#pragma once
+// The `mcmc` method for one sample: the direct fit gives the start point and the points inside the
+// model's range; the posterior (posterior.hpp) over those points is sampled with several
+// stretch-move ensembles until converged (mcmc_sampling.hpp).
+#include <vector>
+
+#include "calibration/calibration_input.hpp"
+#include "calibration/direct_fit.hpp"
+#include "calibration/mcmc_sampling.hpp"
+#include "calibration/posterior.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::calibration {
+
+struct McmcCalibrationOptions {
+  PosteriorOptions posterior;  // parameters, priors, a, lambda
+  McmcOptions sampler;
+  // Start fit; its cell radius, lambda and bounds are taken from `posterior`.
+  DirectFitOptions start_fit;
+};
+
+struct McmcCalibration {
+  DirectFitResult start_fit;                   // MAP-like start (weighted least squares)
+  std::vector<RelativeViscosityPoint> points;  // the points in the likelihood
+  PosteriorOptions posterior;                  // as used
+  double plasma_viscosity = 0.0;               // eta0 [Pa s]
+  McmcResult mcmc;
+  double shear_modulus_median = 0.0;  // [N/m]
+  Interval shear_modulus_interval;    // central credible interval of G_s [N/m]
+  double lambda_median = 0.0;         // the fixed lambda when not fitted
+  Interval lambda_interval;
+  double discrepancy_median = 0.0;  // sigma_d (0 without it)
+  Interval discrepancy_interval;
+  std::vector<double> shear_modulus_draws() const;  // exp(ln G_s) of every post-burn-in draw [N/m]
+};
+
+McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::ViscosityModel& model,
+                               const McmcCalibrationOptions& options = {});
+
+}  // namespace rbcal::calibration

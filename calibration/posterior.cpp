@@ -1,0 +1,81 @@
+#include "calibration/posterior.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace rbcal::calibration {
+
+LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma_viscosity,
+                           std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options)
+    : observation_{&model, plasma_viscosity, options.cell_radius}, points_(std::move(points)), options_(options) {
+  if (points_.empty()) throw std::invalid_argument("posterior needs at least one data point");
+  if (!(options_.shear_modulus_min > 0.0 && options_.shear_modulus_max > options_.shear_modulus_min))
+    throw std::invalid_argument("posterior: need 0 < shear_modulus_min < shear_modulus_max");
+  names_ = {"ln_G_s"};
+  if (options_.fit_lambda) {
+    const surrogate::ParameterRange range = model.range();
+    if (options_.lambda_min <= 0.0) options_.lambda_min = range.lambda_min;
+    if (options_.lambda_max <= 0.0) options_.lambda_max = range.lambda_max;
+    if (!(options_.lambda_min > 0.0 && options_.lambda_max > options_.lambda_min))
+      throw std::invalid_argument("posterior: lambda prior range must satisfy 0 < min < max");
+    lambda_index_ = static_cast<int>(names_.size());
+    names_.push_back("ln_lambda");
+  }
+  if (options_.fit_discrepancy) {
+    discrepancy_index_ = static_cast<int>(names_.size());
+    names_.push_back("ln_sigma_d");
+  }
+}
+
+double LogPosterior::lambda(const Eigen::VectorXd& theta) const {
+  return lambda_index_ >= 0 ? std::exp(theta(lambda_index_)) : options_.lambda;
+}
+
+double LogPosterior::discrepancy(const Eigen::VectorXd& theta) const {
+  return discrepancy_index_ >= 0 ? std::exp(theta(discrepancy_index_)) : 0.0;
+}
+
+double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
+  constexpr double minus_infinity = -std::numeric_limits<double>::infinity();
+  const double ln_lo = std::log(options_.shear_modulus_min), ln_hi = std::log(options_.shear_modulus_max);
+  if (!(theta(0) >= ln_lo && theta(0) <= ln_hi)) return minus_infinity;
+  double log_p = -std::log(ln_hi - ln_lo);
+  if (lambda_index_ >= 0) {
+    const double lo = std::log(options_.lambda_min), hi = std::log(options_.lambda_max);
+    const double x = theta(lambda_index_);
+    if (!(x >= lo && x <= hi)) return minus_infinity;
+    log_p -= std::log(hi - lo);
+  }
+  if (discrepancy_index_ >= 0) {
+    const double s = options_.discrepancy_prior_log_sd;
+    const double z = (theta(discrepancy_index_) - std::log(options_.discrepancy_prior_median)) / s;
+    if (!std::isfinite(z)) return minus_infinity;
+    log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
+  }
+  return log_p;
+}
+
+double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
+  const double shear_modulus = std::exp(theta(0));
+  const double lambda_value = lambda(theta);
+  const double sigma_d = discrepancy(theta);
+  double sum = 0.0;
+  for (const auto& point : points_) {
+    const auto p = observation_.predict(point, shear_modulus, lambda_value);
+    const double variance = point.eta_re_sd * point.eta_re_sd + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
+    const double r = point.eta_re - p.eta_re;
+    sum += r * r / variance + std::log(2.0 * std::numbers::pi * variance);
+  }
+  const double result = -0.5 * sum;
+  return std::isfinite(result) ? result : -std::numeric_limits<double>::infinity();
+}
+
+double LogPosterior::operator()(const Eigen::VectorXd& theta) const {
+  const double prior = log_prior(theta);
+  if (!std::isfinite(prior)) return prior;
+  return prior + log_likelihood(theta);
+}
+
+}  // namespace rbcal::calibration

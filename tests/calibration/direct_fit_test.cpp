@@ -1,0 +1,140 @@
+// The direct Ceres fit: exact recovery, frequentist coverage of the Laplace interval over many
+// synthetic replications, lambda, robust loss, points outside the model's range, and a
+// rank-deficient problem whose covariance must be reported as failed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analytic_viscosity_model.hpp"
+#include "calibration/direct_fit.hpp"
+#include "synthetic_sample.hpp"
+
+using namespace rbcal::calibration;
+using rbcal::calibration::test_models::AnalyticViscosityModel;
+
+TEST(DirectFit, RecoversShearModulusFromNoiselessData) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  design.relative_measurement_sd = 0.0;
+  design.add_model_noise = false;
+  std::mt19937_64 rng(3);
+  SampleData sample = test_models::synthetic_sample(model, design, rng);
+  for (auto& p : sample.points) p.eta_re_sd = 0.02 * p.eta_re;  // stated errors, data exact
+  const DirectFitResult fit = fit_direct(sample, model);
+  EXPECT_TRUE(fit.converged) << fit.solver_report;
+  EXPECT_TRUE(fit.covariance_ok);
+  EXPECT_NEAR(fit.shear_modulus / design.shear_modulus, 1.0, 1e-6);
+  EXPECT_NEAR(fit.chi_square, 0.0, 1e-8);
+  EXPECT_EQ(fit.degrees_of_freedom, static_cast<int>(sample.points.size()) - 1);
+  EXPECT_LT(fit.shear_modulus_interval.lower, design.shear_modulus);
+  EXPECT_GT(fit.shear_modulus_interval.upper, design.shear_modulus);
+  EXPECT_FALSE(fit.at_bound);
+}
+
+TEST(DirectFit, LaplaceIntervalCoversTheTruthAndTheEstimateIsUnbiased) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  constexpr int kReplications = 200;
+  std::mt19937_64 rng(20240601);
+  int covered = 0;
+  double sum_error = 0.0, sum_squared_error = 0.0, sum_laplace_variance = 0.0;
+  for (int r = 0; r < kReplications; ++r) {
+    const SampleData sample = test_models::synthetic_sample(model, design, rng);
+    const DirectFitResult fit = fit_direct(sample, model);
+    ASSERT_TRUE(fit.covariance_ok);
+    const double error = std::log(fit.shear_modulus / design.shear_modulus);
+    sum_error += error;
+    sum_squared_error += error * error;
+    sum_laplace_variance += fit.ln_shear_modulus_sd * fit.ln_shear_modulus_sd;
+    if (fit.shear_modulus_interval.lower <= design.shear_modulus &&
+        design.shear_modulus <= fit.shear_modulus_interval.upper)
+      ++covered;
+  }
+  const double coverage = static_cast<double>(covered) / kReplications;
+  EXPECT_GE(coverage, 0.90);
+  EXPECT_LE(coverage, 0.99);
+  const double bias = sum_error / kReplications;
+  const double spread = std::sqrt(sum_squared_error / kReplications - bias * bias);
+  EXPECT_LT(std::abs(bias), 3.0 * spread / std::sqrt(static_cast<double>(kReplications)));
+  // The Laplace sd matches the spread of the estimates over replications.
+  EXPECT_NEAR(std::sqrt(sum_laplace_variance / kReplications) / spread, 1.0, 0.2);
+}
+
+TEST(DirectFit, FitsLambdaWhenTheModelCanTellItApart) {
+  AnalyticViscosityModel model;
+  model.c3 = 1.0;  // lambda changes the curvature in phi, G_s the slope: both identifiable
+  test_models::SyntheticDesign design;
+  design.lambda = 3.0;
+  design.relative_measurement_sd = 0.005;
+  design.add_model_noise = false;
+  std::mt19937_64 rng(5);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  DirectFitOptions options;
+  options.fit_lambda = true;
+  options.lambda = 1.0;  // start away from the truth
+  const DirectFitResult fit = fit_direct(sample, model, options);
+  ASSERT_EQ(fit.parameter_names.size(), 2u);
+  ASSERT_TRUE(fit.covariance_ok);
+  EXPECT_NEAR(fit.lambda / design.lambda, 1.0, 4.0 * std::sqrt(fit.covariance(1, 1)));
+  EXPECT_NEAR(std::log(fit.shear_modulus / design.shear_modulus), 0.0, 4.0 * fit.ln_shear_modulus_sd);
+  EXPECT_LT(fit.lambda_interval.lower, design.lambda);
+  EXPECT_GT(fit.lambda_interval.upper, design.lambda);
+  EXPECT_DOUBLE_EQ(fit.covariance(0, 1), fit.covariance(1, 0));
+}
+
+TEST(DirectFit, RobustLossResistsAnOutlier) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  design.relative_measurement_sd = 0.01;
+  design.add_model_noise = false;
+  std::mt19937_64 rng(9);
+  SampleData sample = test_models::synthetic_sample(model, design, rng);
+  const DirectFitResult clean = fit_direct(sample, model);
+  sample.points[5].eta_re *= 2.0;  // a gross outlier (about 70 standard deviations)
+  const DirectFitResult plain = fit_direct(sample, model);
+  DirectFitOptions robust_options;
+  robust_options.loss = RobustLoss::cauchy;
+  const DirectFitResult robust = fit_direct(sample, model, robust_options);
+  // The outlier drags the plain fit by several standard errors; the Cauchy fit stays with the clean one.
+  const double sd = clean.ln_shear_modulus_sd;
+  EXPECT_GT(std::abs(std::log(plain.shear_modulus / clean.shear_modulus)), 3.0 * sd);
+  EXPECT_LT(std::abs(std::log(robust.shear_modulus / clean.shear_modulus)), 0.2 * sd);
+}
+
+TEST(DirectFit, PointsOutsideTheModelRangeAreFlagged) {
+  AnalyticViscosityModel model;
+  model.box.ca_max = 0.5;  // high shear rates leave the model
+  model.box.phi_max = 0.35;  // and phi = 0.4
+  test_models::SyntheticDesign design;
+  design.relative_measurement_sd = 0.01;
+  design.add_model_noise = false;
+  std::mt19937_64 rng(11);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  const DirectFitResult fit = fit_direct(sample, model);
+  int unused = 0;
+  for (const auto& p : fit.points) {
+    const bool inside = p.point.phi <= 0.35 && p.capillary_number <= 0.5;
+    EXPECT_EQ(p.used, inside) << "phi " << p.point.phi << " Ca " << p.capillary_number;
+    if (!p.used) {
+      ++unused;
+      EXPECT_NE(p.reason.find("outside the model's range"), std::string::npos);
+    }
+  }
+  EXPECT_GT(unused, 8);
+  EXPECT_FALSE(fit.messages.empty());
+  EXPECT_NEAR(std::log(fit.shear_modulus / design.shear_modulus), 0.0, 4.0 * fit.ln_shear_modulus_sd);
+}
+
+TEST(DirectFit, ReportsAFailedCovarianceInsteadOfAnInterval) {
+  AnalyticViscosityModel model;
+  model.c1 = 0.0;  // eta_re does not depend on Ca: G_s is not identifiable
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(13);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  const DirectFitResult fit = fit_direct(sample, model);
+  EXPECT_FALSE(fit.covariance_ok);
+  EXPECT_TRUE(std::isnan(fit.shear_modulus_interval.lower));
+  EXPECT_FALSE(fit.messages.empty());
+}
+

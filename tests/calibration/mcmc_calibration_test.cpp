@@ -1,0 +1,146 @@
+// The MCMC calibration end to end: stop criterion, reproducibility with a fixed seed (also across
+// thread counts), coverage of the credible interval over replications (cheap fixed-length runs),
+// posterior-predictive bands, and the comparison of two samples.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analytic_viscosity_model.hpp"
+#include "calibration/mcmc_calibration.hpp"
+#include "calibration/predictive_bands.hpp"
+#include "calibration/sample_comparison.hpp"
+#include "synthetic_sample.hpp"
+
+using namespace rbcal::calibration;
+using rbcal::calibration::test_models::AnalyticViscosityModel;
+
+TEST(McmcCalibration, StopsWhenConvergedAndIsReproducible) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(77);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  McmcCalibrationOptions options;
+  options.posterior.fit_discrepancy = true;
+  options.sampler.threads = 1;
+  const McmcCalibration a = calibrate_mcmc(sample, model, options);
+  ASSERT_TRUE(a.mcmc.converged) << a.mcmc.stop_reason;
+  EXPECT_LT(a.mcmc.parameters[0].rhat, 1.01);
+  EXPECT_GE(a.mcmc.parameters[0].bulk_ess, 1000.0);
+  EXPECT_LT(a.mcmc.steps, options.sampler.max_steps);
+  EXPECT_GT(a.mcmc.acceptance_fraction, 0.2);
+  EXPECT_LT(a.mcmc.acceptance_fraction, 0.9);
+  EXPECT_LT(a.shear_modulus_interval.lower, a.shear_modulus_median);
+  EXPECT_GT(a.shear_modulus_interval.upper, a.shear_modulus_median);
+  EXPECT_EQ(static_cast<int>(a.mcmc.chains.size()), options.sampler.chains);
+
+  options.sampler.threads = 2;
+  const McmcCalibration b = calibrate_mcmc(sample, model, options);
+  EXPECT_EQ(a.mcmc.steps, b.mcmc.steps);
+  EXPECT_EQ(a.mcmc.parameter_draws(0), b.mcmc.parameter_draws(0));
+
+  options.sampler.seed += 1;
+  const McmcCalibration c = calibrate_mcmc(sample, model, options);
+  EXPECT_NE(a.mcmc.parameter_draws(0), c.mcmc.parameter_draws(0));
+  // Different seeds agree within Monte Carlo error.
+  const double mcse = a.mcmc.parameters[0].sd / std::sqrt(a.mcmc.parameters[0].bulk_ess);
+  EXPECT_NEAR(a.mcmc.parameters[0].mean, c.mcmc.parameters[0].mean, 6.0 * mcse);
+}
+
+TEST(McmcCalibration, CredibleIntervalCoversTheTruth) {
+  // Cheap fixed-length runs (no convergence check) over 100 synthetic replications.
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  McmcCalibrationOptions options;
+  options.sampler.chains = 2;
+  options.sampler.walkers = 8;
+  options.sampler.min_steps = 400;
+  options.sampler.max_steps = 400;
+  options.sampler.threads = 1;
+  constexpr int kReplications = 100;
+  std::mt19937_64 rng(4242);
+  int covered = 0;
+  double sum_error = 0.0, sum_squared = 0.0;
+  for (int r = 0; r < kReplications; ++r) {
+    const SampleData sample = test_models::synthetic_sample(model, design, rng);
+    options.sampler.seed = 1000 + r;
+    const McmcCalibration result = calibrate_mcmc(sample, model, options);
+    const double error = std::log(result.shear_modulus_median / design.shear_modulus);
+    sum_error += error;
+    sum_squared += error * error;
+    if (result.shear_modulus_interval.lower <= design.shear_modulus &&
+        design.shear_modulus <= result.shear_modulus_interval.upper)
+      ++covered;
+  }
+  EXPECT_GE(covered, 90);
+  EXPECT_LE(covered, 99);
+  const double bias = sum_error / kReplications;
+  const double spread = std::sqrt(sum_squared / kReplications - bias * bias);
+  EXPECT_LT(std::abs(bias), 3.0 * spread / std::sqrt(static_cast<double>(kReplications)));
+}
+
+TEST(McmcCalibration, PredictiveBandsFollowTheTrueCurve) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(88);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  McmcCalibrationOptions options;
+  options.sampler.threads = 1;
+  const McmcCalibration result = calibrate_mcmc(sample, model, options);
+  PredictiveBandOptions band_options;
+  band_options.shear_rate_points = 20;
+  band_options.max_draws = 400;
+  const auto bands = predictive_bands(model, result, band_options);
+  ASSERT_EQ(bands.size(), design.phis.size());
+  int inside = 0, total = 0;
+  for (const auto& band : bands) {
+    ASSERT_EQ(band.shear_rate.size(), 20u);
+    EXPECT_NEAR(band.shear_rate.front(), design.shear_rates.front(), 1e-12);
+    EXPECT_NEAR(band.shear_rate.back(), design.shear_rates.back(), 1e-9);
+    for (std::size_t i = 0; i < band.shear_rate.size(); ++i) {
+      EXPECT_LT(band.lower[i], band.median[i]);
+      EXPECT_GT(band.upper[i], band.median[i]);
+      const double ca = capillary_number(design.plasma_viscosity, band.shear_rate[i], kDefaultCellRadius,
+                                         design.shear_modulus);
+      const double truth = design.plasma_viscosity * model.predict(band.phi, ca, design.lambda).eta_re;
+      inside += band.lower[i] <= truth && truth <= band.upper[i];
+      ++total;
+    }
+    // Shear thinning: the band's median falls with shear rate.
+    EXPECT_GT(band.median.front(), band.median.back());
+  }
+  EXPECT_GE(inside, total * 9 / 10);
+  // Without the model's error the band is narrower (only the uncertainty of G_s).
+  band_options.include_model_error = false;
+  const auto narrow = predictive_bands(model, result, band_options);
+  EXPECT_LT(narrow[0].upper[5] - narrow[0].lower[5], bands[0].upper[5] - bands[0].lower[5]);
+}
+
+TEST(McmcCalibration, RatioOfTwoSamplesShearModuli) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign intact_design, hard_design;
+  intact_design.shear_modulus = 0.55e-6;
+  hard_design.shear_modulus = 2.43e-6;  // the seed study's hardened / intact values
+  hard_design.shear_rates = {5.0, 10.0, 22.0, 46.0, 100.0, 220.0, 460.0, 1000.0};
+  std::mt19937_64 rng(99);
+  const SampleData intact = test_models::synthetic_sample(model, intact_design, rng);
+  const SampleData hard = test_models::synthetic_sample(model, hard_design, rng);
+  McmcCalibrationOptions options;
+  options.sampler.threads = 1;
+  const McmcCalibration a = calibrate_mcmc(intact, model, options);
+  const McmcCalibration b = calibrate_mcmc(hard, model, options);
+  const ShearModulusRatio ratio = compare_shear_moduli(b.shear_modulus_draws(), a.shear_modulus_draws());
+  const double true_ratio = hard_design.shear_modulus / intact_design.shear_modulus;
+  EXPECT_LT(ratio.interval.lower, true_ratio);
+  EXPECT_GT(ratio.interval.upper, true_ratio);
+  EXPECT_GT(ratio.probability_greater_than_one, 0.999);
+  // Independent posteriors: ln ratio has the variance of the sum.
+  const double sd_a = a.mcmc.parameters[0].sd, sd_b = b.mcmc.parameters[0].sd;
+  std::vector<double> log_ratio;
+  for (double r : ratio.draws) log_ratio.push_back(std::log(r));
+  double mean = 0.0, squares = 0.0;
+  for (double x : log_ratio) mean += x;
+  mean /= log_ratio.size();
+  for (double x : log_ratio) squares += (x - mean) * (x - mean);
+  EXPECT_NEAR(std::sqrt(squares / log_ratio.size()) / std::hypot(sd_a, sd_b), 1.0, 0.05);
+}
