@@ -63,6 +63,8 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
   const double sigma_d = discrepancy(theta);
   double sum = 0.0;
   for (const auto& point : points_) {
+    if (options_.reject_outside_model_range && !observation_.inside_range(point, shear_modulus, lambda_value))
+      return -std::numeric_limits<double>::infinity();
     const auto p = observation_.predict(point, shear_modulus, lambda_value);
     const double variance = point.eta_re_sd * point.eta_re_sd + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
     const double r = point.eta_re - p.eta_re;

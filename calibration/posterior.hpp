@@ -32,6 +32,10 @@ struct PosteriorOptions {
   double lambda_max = 0.0;
   double discrepancy_prior_median = 0.05;  // sigma_d's prior median (5 % relative error)
   double discrepancy_prior_log_sd = 1.0;   // sd of ln sigma_d's prior
+  // true: theta where any point's (phi, Ca, lambda) leaves the model's range has zero posterior
+  // (the posterior is truncated to where the model was built); false: the model is trusted to
+  // widen its own predictive sd outside its range.
+  bool reject_outside_model_range = false;
 };
 
 class LogPosterior {

@@ -138,3 +138,27 @@ TEST(DirectFit, ReportsAFailedCovarianceInsteadOfAnInterval) {
   EXPECT_FALSE(fit.messages.empty());
 }
 
+
+// With lambda fitted too, both 95 % Laplace intervals cover their truths over 200 replications.
+TEST(DirectFit, LaplaceIntervalsCoverWithLambdaFitted) {
+  AnalyticViscosityModel model;
+  model.c3 = 1.0;
+  test_models::SyntheticDesign design;
+  DirectFitOptions options;
+  options.fit_lambda = true;
+  constexpr int kReplications = 200;
+  std::mt19937_64 rng(777);
+  int covered_g = 0, covered_l = 0;
+  for (int r = 0; r < kReplications; ++r) {
+    const SampleData sample = test_models::synthetic_sample(model, design, rng);
+    const DirectFitResult fit = fit_direct(sample, model, options);
+    ASSERT_TRUE(fit.covariance_ok);
+    covered_g += fit.shear_modulus_interval.lower <= design.shear_modulus &&
+                 design.shear_modulus <= fit.shear_modulus_interval.upper;
+    covered_l += fit.lambda_interval.lower <= design.lambda && design.lambda <= fit.lambda_interval.upper;
+  }
+  EXPECT_GE(covered_g, 180);
+  EXPECT_LE(covered_g, 198);
+  EXPECT_GE(covered_l, 180);
+  EXPECT_LE(covered_l, 198);
+}

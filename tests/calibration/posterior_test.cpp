@@ -1,0 +1,80 @@
+// The log posterior term by term: the Gaussian likelihood with its three variance parts, the
+// normalised priors, their supports, and the optional truncation to the model's range.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "analytic_viscosity_model.hpp"
+#include "calibration/posterior.hpp"
+
+using namespace rbcal::calibration;
+using rbcal::calibration::test_models::AnalyticViscosityModel;
+
+namespace {
+
+RelativeViscosityPoint point(double phi, double rate, double eta_re, double sd) {
+  RelativeViscosityPoint p;
+  p.phi = phi;
+  p.shear_rate = rate;
+  p.eta_re = eta_re;
+  p.eta_re_sd = sd;
+  return p;
+}
+
+}  // namespace
+
+TEST(Posterior, LikelihoodAddsMeasurementModelAndDiscrepancyVariances) {
+  AnalyticViscosityModel model;
+  const double eta0 = 1.5e-3, g_s = 1e-6;
+  const auto data = point(0.3, 20.0, 2.4, 0.05);
+  PosteriorOptions options;
+  options.fit_discrepancy = true;
+  const LogPosterior posterior(model, eta0, {data}, options);
+  ASSERT_EQ(posterior.dimension(), 2);
+  EXPECT_EQ(posterior.parameter_names()[1], "ln_sigma_d");
+  const double sigma_d = 0.07;
+  const Eigen::Vector2d theta(std::log(g_s), std::log(sigma_d));
+
+  const auto p = model.predict(0.3, capillary_number(eta0, 20.0, kDefaultCellRadius, g_s), 5.0);
+  const double variance = 0.05 * 0.05 + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
+  const double expected = -0.5 * (std::pow(2.4 - p.eta_re, 2) / variance + std::log(2 * std::numbers::pi * variance));
+  EXPECT_NEAR(posterior.log_likelihood(theta), expected, 1e-12);
+  EXPECT_NEAR(posterior(theta), posterior.log_prior(theta) + expected, 1e-12);
+}
+
+TEST(Posterior, PriorsAreNormalisedAndBounded) {
+  AnalyticViscosityModel model;
+  PosteriorOptions options;
+  options.fit_lambda = true;
+  options.fit_discrepancy = true;
+  const LogPosterior posterior(model, 1.5e-3, {point(0.2, 10.0, 1.8, 0.05)}, options);
+  ASSERT_EQ(posterior.lambda_index(), 1);
+  ASSERT_EQ(posterior.discrepancy_index(), 2);
+  // Uniform in ln G_s over [1e-8, 1e-3], in ln lambda over the model's [0.1, 20], normal in ln sigma_d.
+  const double ln_sigma = std::log(0.05);
+  const Eigen::Vector3d inside(std::log(1e-6), std::log(5.0), ln_sigma);
+  const double expected = -std::log(std::log(1e-3 / 1e-8)) - std::log(std::log(20.0 / 0.1)) -
+                          0.5 * std::log(2.0 * std::numbers::pi);
+  EXPECT_NEAR(posterior.log_prior(inside), expected, 1e-12);
+  EXPECT_NEAR(posterior.log_prior(Eigen::Vector3d(inside(0), inside(1), ln_sigma + 1.0)), expected - 0.5, 1e-12);
+  EXPECT_TRUE(std::isinf(posterior(Eigen::Vector3d(std::log(2e-3), std::log(5.0), ln_sigma))));
+  EXPECT_TRUE(std::isinf(posterior(Eigen::Vector3d(std::log(1e-6), std::log(30.0), ln_sigma))));
+  EXPECT_DOUBLE_EQ(posterior.lambda(inside), 5.0);
+}
+
+TEST(Posterior, CanBeTruncatedToTheModelsRange) {
+  AnalyticViscosityModel model;  // Ca in [0.003, 20]
+  const double eta0 = 1.5e-3;
+  const auto data = point(0.2, 100.0, 1.8, 0.05);
+  // Ca = eta0 * 100 * 4e-6 / G_s: G_s = 1e-6 gives Ca 0.6 (inside), G_s = 1e-8 gives Ca 60 (outside).
+  PosteriorOptions options;
+  const LogPosterior trusting(model, eta0, {data}, options);
+  options.reject_outside_model_range = true;
+  const LogPosterior truncated(model, eta0, {data}, options);
+  const Eigen::VectorXd inside = Eigen::VectorXd::Constant(1, std::log(1e-6));
+  const Eigen::VectorXd outside = Eigen::VectorXd::Constant(1, std::log(1.2e-8));
+  EXPECT_DOUBLE_EQ(truncated(inside), trusting(inside));
+  EXPECT_TRUE(std::isfinite(trusting(outside)));
+  EXPECT_TRUE(std::isinf(truncated(outside)));
+}
