@@ -18,6 +18,10 @@ int main(int argc, char** argv) {
   rbcal::cli::add_bench_command(app);
   rbcal::cli::add_stretch_command(app);
   rbcal::cli::add_simulate_command(app);
+  rbcal::cli::add_surrogate_command(app);
+  CLI::App* library = app.add_subcommand("library", "Simulation libraries: generate, show, propose");
+  library->require_subcommand(1);
+  rbcal::cli::add_library_inspect_commands(*library);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

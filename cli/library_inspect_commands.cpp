@@ -1,0 +1,102 @@
+// `rbcal library show LIB`: cases, ranges, cost and the grid of present / missing points;
+// `rbcal library propose LIB [-n K]`: the next cases where the surrogate is least sure.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "surrogate/case_proposal.hpp"
+#include "surrogate/json_file.hpp"
+#include "surrogate/library_summary.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace rbcal::cli {
+
+namespace {
+
+struct ProposeOptions {
+  std::string library;
+  std::size_t count = 5;
+  std::string surrogate;  // empty: LIB/surrogate.json if present, else fit now
+  std::vector<double> phi, ca, lambda;
+  std::string json_path;
+};
+
+surrogate::ParameterGrid candidate_grid(const ProposeOptions& o, const surrogate::SimulationLibrary& lib) {
+  if (!o.phi.empty() || !o.ca.empty() || !o.lambda.empty()) {
+    if (o.phi.empty() || o.ca.empty() || o.lambda.empty())
+      throw std::invalid_argument("library propose: a user grid needs all of --phi, --ca and --lambda");
+    return {o.phi, o.ca, o.lambda};
+  }
+  if (lib.plan) return surrogate::refined(*lib.plan);
+  surrogate::ParameterGrid present;
+  for (const auto& c : lib.cases) {
+    present.phi.push_back(c.phi);
+    present.capillary_number.push_back(c.capillary_number);
+    present.viscosity_ratio.push_back(c.viscosity_ratio);
+  }
+  return surrogate::refined(present);
+}
+
+void run_propose(const ProposeOptions& o) {
+  const surrogate::SimulationLibrary lib = surrogate::read_library(o.library);
+  std::filesystem::path surrogate_file = o.surrogate;
+  if (surrogate_file.empty() && std::filesystem::exists(std::filesystem::path(o.library) / "surrogate.json"))
+    surrogate_file = std::filesystem::path(o.library) / "surrogate.json";
+  const surrogate::ViscositySurrogate s =
+      surrogate_file.empty() ? surrogate::ViscositySurrogate::fit(surrogate::training_cases(lib), o.library)
+                             : surrogate::load_surrogate(surrogate_file);
+  if (!surrogate_file.empty() && s.training_cases().size() != lib.cases.size())
+    std::cerr << "rbcal library propose: warning: " << surrogate_file.string() << " was built on "
+              << s.training_cases().size() << " cases, the library now has " << lib.cases.size()
+              << " (rebuild with `rbcal surrogate build`)\n";
+  const surrogate::ParameterGrid grid = candidate_grid(o, lib);
+  const std::vector<surrogate::ProposedCase> proposals = surrogate::propose_cases(s, grid, o.count);
+  std::printf("rbcal library propose: %zu of %zu candidates (%s), surrogate %s\n", proposals.size(), grid.size(),
+              !o.phi.empty() ? "user grid" : lib.plan ? "plan grid refined" : "library grid refined",
+              surrogate_file.empty() ? "fitted now" : surrogate_file.string().c_str());
+  std::printf("  %3s %8s %8s %8s %10s %12s %14s\n", "#", "phi", "Ca", "lambda", "eta_re", "rel. sd now", "when chosen");
+  nlohmann::json cases = nlohmann::json::array();
+  for (std::size_t i = 0; i < proposals.size(); ++i) {
+    const auto& p = proposals[i];
+    std::printf("  %3zu %8.4g %8.4g %8.4g %10.5g %11.3g%% %13.3g%%%s\n", i + 1, p.phi, p.capillary_number,
+                p.viscosity_ratio, p.eta_re, 100.0 * p.relative_sd, 100.0 * p.relative_sd_when_chosen,
+                p.inside_hull ? "" : "  (outside the library)");
+    cases.push_back({{"phi", p.phi},
+                     {"Ca", p.capillary_number},
+                     {"lambda", p.viscosity_ratio},
+                     {"eta_re_predicted", p.eta_re},
+                     {"relative_sd", p.relative_sd}});
+  }
+  if (!o.json_path.empty())
+    surrogate::write_json_file_atomically(o.json_path, {{"schema", "rbcal.proposal/1"}, {"library", o.library}, {"cases", cases}});
+}
+
+}  // namespace
+
+void add_library_inspect_commands(CLI::App& library) {
+  auto show_library = std::make_shared<std::string>();
+  CLI::App* show = library.add_subcommand("show", "Cases, ranges, cost, median SEM and the present / missing grid points");
+  show->add_option("library", *show_library, "Library folder (with cases/, optionally plan.json)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  show->callback([show_library] { std::cout << surrogate::format_summary(surrogate::summarise(surrogate::read_library(*show_library))); });
+
+  auto o = std::make_shared<ProposeOptions>();
+  CLI::App* propose = library.add_subcommand(
+      "propose", "Next cases where the surrogate's variance is largest (greedy over the plan grid refined, or a user grid)");
+  propose->add_option("library", o->library, "Library folder")->required()->check(CLI::ExistingDirectory);
+  propose->add_option("-n,--count", o->count, "How many cases to propose")->capture_default_str()->check(CLI::PositiveNumber);
+  propose->add_option("--surrogate", o->surrogate, "Surrogate file (default: LIB/surrogate.json if present, else fit now)")
+      ->check(CLI::ExistingFile);
+  propose->add_option("--phi", o->phi, "User grid: volume fractions (with --ca and --lambda)")->delimiter(',');
+  propose->add_option("--ca", o->ca, "User grid: capillary numbers")->delimiter(',');
+  propose->add_option("--lambda", o->lambda, "User grid: viscosity ratios")->delimiter(',');
+  propose->add_option("--json", o->json_path, "Also write the proposals to this JSON file (schema rbcal.proposal/1)");
+  propose->callback([o] { run_propose(*o); });
+}
+
+}  // namespace rbcal::cli

@@ -1,0 +1,107 @@
+// `rbcal surrogate build LIB [-o OUT]`: fit the Gaussian-process surrogate to a simulation
+// library and report its leave-one-out errors; `rbcal surrogate predict SURROGATE --phi
+// --ca --lambda`: eta_re with its predictive sd from a saved surrogate.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace rbcal::cli {
+
+namespace {
+
+struct SurrogateBuildOptions {
+  std::string library;
+  std::string output;
+  double warn_limit = 3.0;
+};
+
+struct SurrogatePredictOptions {
+  std::string surrogate;
+  double phi = 0.0, ca = 0.0, lambda = 5.0;
+};
+
+void print_model(const surrogate::ViscositySurrogate& s) {
+  const auto& hp = s.process().hyperparameters();
+  char line[256];
+  std::printf("  training cases      %zu\n", s.training_cases().size());
+  const surrogate::ParameterRange r = s.range();
+  std::printf("  range               phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
+              r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
+  std::printf("  signal sd           %.4g (ln eta_re)\n", std::exp(0.5 * hp.log_signal_variance));
+  std::printf("  length scales       phi %.4g, ln Ca %.4g, ln lambda %.4g\n", std::exp(hp.log_length_scales(0)),
+              std::exp(hp.log_length_scales(1)), std::exp(hp.log_length_scales(2)));
+  std::printf("  nugget sd           %.3g (ln eta_re, on top of each case's SEM)\n", std::exp(0.5 * hp.log_nugget_variance));
+  std::printf("  log marginal lik.   %.6g (%d of %d starts converged)\n", s.fit_info().log_marginal_likelihood,
+              s.fit_info().starts_converged, s.fit_info().starts_tried);
+  std::string mean = "  mean ln eta_re      ";
+  const Eigen::VectorXd b = s.mean_coefficients(), sd = s.mean_coefficient_sds();
+  for (std::size_t k = 0; k < s.mean_terms().size(); ++k) {
+    std::snprintf(line, sizeof line, "%s(%.4g +- %.2g) %s", k ? " + " : "", b(static_cast<Eigen::Index>(k)),
+                  sd(static_cast<Eigen::Index>(k)), s.mean_terms()[k].c_str());
+    mean += line;
+  }
+  std::printf("%s\n", mean.c_str());
+}
+
+void run_build(const SurrogateBuildOptions& o) {
+  const std::filesystem::path out =
+      o.output.empty() ? std::filesystem::path(o.library) / "surrogate.json" : std::filesystem::path(o.output);
+  const surrogate::ViscositySurrogate s = surrogate::build_surrogate(o.library);
+  surrogate::save_surrogate(s, out);
+  std::printf("rbcal surrogate build: %s -> %s\n", o.library.c_str(), out.string().c_str());
+  print_model(s);
+  const surrogate::LeaveOneOutReport loo = s.leave_one_out();
+  std::cout << surrogate::format_leave_one_out(loo, o.warn_limit);
+  for (const auto& c : loo.cases)
+    if (std::abs(c.standardised_residual) > o.warn_limit)
+      std::cerr << "rbcal surrogate build: warning: case " << c.id << " has standardised leave-one-out residual "
+                << c.standardised_residual << "\n";
+}
+
+void run_predict(const SurrogatePredictOptions& o) {
+  const surrogate::ViscositySurrogate s = surrogate::load_surrogate(o.surrogate);
+  const surrogate::ViscosityPrediction p = s.predict(o.phi, o.ca, o.lambda);
+  std::printf("phi %.4g, Ca %.4g, lambda %.4g\n", o.phi, o.ca, o.lambda);
+  std::printf("  eta_re              %.6g +- %.3g (1 sd, surrogate uncertainty)\n", p.eta_re, p.sd);
+  std::printf("  d eta_re / d phi    %.6g\n", p.d_phi);
+  std::printf("  d eta_re / d ln Ca  %.6g\n", p.d_ln_ca);
+  std::printf("  d eta_re / d ln lambda %.6g\n", p.d_ln_lambda);
+  if (!p.inside_hull) {
+    const surrogate::ParameterRange r = s.range();
+    std::printf("warning: outside the library (phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g): extrapolation\n",
+                r.phi_min, r.phi_max, r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
+    std::cerr << "rbcal surrogate predict: warning: query outside the library's range\n";
+  }
+}
+
+}  // namespace
+
+void add_surrogate_command(CLI::App& app) {
+  CLI::App* surrogate = app.add_subcommand("surrogate", "Gaussian-process surrogate of eta_re(phi, Ca, lambda): build, predict");
+  surrogate->require_subcommand(1);
+
+  auto b = std::make_shared<SurrogateBuildOptions>();
+  CLI::App* build = surrogate->add_subcommand(
+      "build", "Fit the surrogate to a library (LIB/cases/*.json): hyper-parameters, leave-one-out report -> JSON");
+  build->add_option("library", b->library, "Library folder (with cases/)")->required()->check(CLI::ExistingDirectory);
+  build->add_option("-o,--output", b->output, "Surrogate file (default: LIB/surrogate.json)");
+  build->add_option("--warn-residual", b->warn_limit, "Warn about cases with |standardised LOO residual| above this")
+      ->check(CLI::PositiveNumber);
+  build->callback([b] { run_build(*b); });
+
+  auto p = std::make_shared<SurrogatePredictOptions>();
+  CLI::App* predict = surrogate->add_subcommand("predict", "eta_re +- sd and derivatives from a saved surrogate");
+  predict->add_option("surrogate", p->surrogate, "Surrogate file (rbcal.surrogate/1)")->required()->check(CLI::ExistingFile);
+  predict->add_option("--phi", p->phi, "Volume fraction")->required()->check(CLI::Range(0.0, 1.0));
+  predict->add_option("--ca", p->ca, "Capillary number eta0 gamma_dot a / G_s")->required()->check(CLI::PositiveNumber);
+  predict->add_option("--lambda", p->lambda, "Viscosity ratio eta1 / eta0")->capture_default_str()->check(CLI::PositiveNumber);
+  predict->callback([p] { run_predict(*p); });
+}
+
+}  // namespace rbcal::cli

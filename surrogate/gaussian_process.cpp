@@ -1,0 +1,131 @@
+#include "surrogate/gaussian_process.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rbcal::surrogate {
+
+Eigen::VectorXd GaussianProcessHyperparameters::packed() const {
+  const Eigen::Index d = log_length_scales.size();
+  Eigen::VectorXd p(d + 2);
+  p(0) = log_signal_variance;
+  p.segment(1, d) = log_length_scales;
+  p(d + 1) = log_nugget_variance;
+  return p;
+}
+
+GaussianProcessHyperparameters GaussianProcessHyperparameters::unpacked(const Eigen::VectorXd& p) {
+  if (p.size() < 3) throw std::invalid_argument("GaussianProcessHyperparameters: packed vector too short");
+  const Eigen::Index d = p.size() - 2;
+  return {p(0), p.segment(1, d), p(d + 1)};
+}
+
+Matern52Kernel GaussianProcessHyperparameters::kernel() const {
+  return {std::exp(log_signal_variance), log_length_scales.array().exp().matrix()};
+}
+
+GaussianProcess::GaussianProcess(GaussianProcessData data, GaussianProcessHyperparameters hyperparameters)
+    : data_(std::move(data)), hyperparameters_(std::move(hyperparameters)), kernel_(hyperparameters_.kernel()) {
+  const Eigen::Index n = data_.inputs.rows(), d = data_.inputs.cols(), m = data_.basis.cols();
+  if (n == 0 || data_.targets.size() != n || data_.noise_variances.size() != n || data_.basis.rows() != n)
+    throw std::invalid_argument("GaussianProcess: inputs, targets, noise variances and basis differ in length");
+  if (hyperparameters_.log_length_scales.size() != d)
+    throw std::invalid_argument("GaussianProcess: one length scale per input dimension needed");
+  if (m > n) throw std::invalid_argument("GaussianProcess: more mean basis functions than points");
+
+  Eigen::MatrixXd k(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < i; ++j) k(i, j) = k(j, i) = kernel_(data_.inputs.row(i).transpose(), data_.inputs.row(j).transpose());
+    k(i, i) = kernel_.signal_variance + total_noise_variance(i);
+  }
+  k_cholesky_.compute(k);
+  if (k_cholesky_.info() != Eigen::Success) throw std::runtime_error("GaussianProcess: covariance matrix not positive definite");
+  k_inverse_basis_ = k_cholesky_.solve(data_.basis);
+  a_cholesky_.compute(data_.basis.transpose() * k_inverse_basis_);
+  if (a_cholesky_.info() != Eigen::Success)
+    throw std::runtime_error("GaussianProcess: mean basis is rank deficient on the training inputs");
+  const Eigen::VectorXd k_inverse_y = k_cholesky_.solve(data_.targets);
+  beta_ = a_cholesky_.solve(data_.basis.transpose() * k_inverse_y);  // GLS, eq. 2.42's beta-bar
+  alpha_ = k_inverse_y - k_inverse_basis_ * beta_;                    // P y
+}
+
+double GaussianProcess::total_noise_variance(Eigen::Index i) const {
+  return data_.noise_variances(i) + std::exp(hyperparameters_.log_nugget_variance) + kGaussianProcessJitterVariance;
+}
+
+Eigen::VectorXd GaussianProcess::cross_covariance(const Eigen::VectorXd& x) const {
+  const Eigen::Index n = data_.inputs.rows();
+  Eigen::VectorXd k_star(n);
+  for (Eigen::Index i = 0; i < n; ++i) k_star(i) = kernel_(x, data_.inputs.row(i).transpose());
+  return k_star;
+}
+
+double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const {
+  const Eigen::VectorXd k_star = cross_covariance(x);
+  const Eigen::VectorXd v = k_cholesky_.matrixL().solve(k_star);
+  const Eigen::VectorXd r = h_at_x - k_inverse_basis_.transpose() * k_star;  // R = h* - H^T K^-1 k*
+  // eq. 2.42: cov = k** - k*^T K^-1 k* + R^T A^-1 R
+  const double variance = kernel_.signal_variance - v.squaredNorm() + r.dot(a_cholesky_.solve(r));
+  return std::max(variance, 0.0);
+}
+
+GaussianProcessPrediction GaussianProcess::predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
+                                                   const Eigen::MatrixXd& h_jacobian) const {
+  const Eigen::Index n = data_.inputs.rows();
+  GaussianProcessPrediction p;
+  const Eigen::VectorXd k_star = cross_covariance(x);
+  p.mean = h_at_x.dot(beta_) + k_star.dot(alpha_);  // eq. 2.41: h*^T beta + k*^T K^-1 (y - H beta)
+  p.variance = latent_variance(x, h_at_x);
+  p.mean_gradient = h_jacobian.transpose() * beta_;
+  for (Eigen::Index i = 0; i < n; ++i)
+    p.mean_gradient += alpha_(i) * kernel_.gradient_in_first(x, data_.inputs.row(i).transpose());
+  return p;
+}
+
+Eigen::MatrixXd GaussianProcess::mean_coefficient_covariance() const {
+  const Eigen::Index m = data_.basis.cols();
+  return a_cholesky_.solve(Eigen::MatrixXd::Identity(m, m));
+}
+
+Eigen::MatrixXd GaussianProcess::projection() const {
+  const Eigen::Index n = data_.inputs.rows();
+  const Eigen::MatrixXd k_inverse = k_cholesky_.solve(Eigen::MatrixXd::Identity(n, n));
+  return k_inverse - k_inverse_basis_ * a_cholesky_.solve(k_inverse_basis_.transpose());
+}
+
+double GaussianProcess::log_marginal_likelihood() const {
+  const double n = static_cast<double>(data_.inputs.rows()), m = static_cast<double>(data_.basis.cols());
+  const double log_det_k = 2.0 * k_cholesky_.matrixLLT().diagonal().array().log().sum();
+  const double log_det_a = 2.0 * a_cholesky_.matrixLLT().diagonal().array().log().sum();
+  return -0.5 * data_.targets.dot(alpha_) - 0.5 * log_det_k - 0.5 * log_det_a -
+         0.5 * (n - m) * std::log(2.0 * std::numbers::pi);
+}
+
+Eigen::VectorXd GaussianProcess::log_marginal_likelihood_gradient() const {
+  const Eigen::Index n = data_.inputs.rows(), d = data_.inputs.cols();
+  // W = alpha alpha^T - P; gradient_j = 1/2 sum_ab W_ab dK_ab/d theta_j (W and dK symmetric).
+  const Eigen::MatrixXd w = alpha_ * alpha_.transpose() - projection();
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(d + 2);
+  const double nugget = std::exp(hyperparameters_.log_nugget_variance);
+  for (Eigen::Index a = 0; a < n; ++a) {
+    gradient(0) += 0.5 * w(a, a) * kernel_.signal_variance;  // dK/d ln s2 = k (diagonal: s2)
+    gradient(d + 1) += 0.5 * w(a, a) * nugget;                // dK/d ln nugget = nugget I
+    for (Eigen::Index b = 0; b < a; ++b) {
+      const Eigen::VectorXd xa = data_.inputs.row(a).transpose(), xb = data_.inputs.row(b).transpose();
+      gradient(0) += w(a, b) * kernel_(xa, xb);  // off-diagonal pairs counted twice, times 1/2
+      gradient.segment(1, d) += w(a, b) * kernel_.log_length_scale_derivatives(xa, xb);
+    }
+  }
+  return gradient;
+}
+
+LeaveOneOutPredictions GaussianProcess::leave_one_out() const {
+  const Eigen::VectorXd p_diagonal = projection().diagonal();
+  LeaveOneOutPredictions loo;
+  loo.variance = p_diagonal.cwiseInverse();                                  // eq. 5.12: 1 / [K^-1]_ii
+  loo.mean = data_.targets - alpha_.cwiseQuotient(p_diagonal);               // eq. 5.12: y_i - [K^-1 y]_i / [K^-1]_ii
+  return loo;
+}
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,98 @@
+#pragma once
+// Gaussian-process regression with an explicit linear mean ("universal kriging"):
+//   y_i = h(x_i)^T beta + f(x_i) + eps_i,  f ~ GP(0, k) (Matern-5/2, matern52_kernel.hpp),
+//   eps_i ~ N(0, noise_i + nugget + jitter)  (heteroscedastic, known noise_i per point),
+// with beta given a vague (flat) prior and integrated out, i.e. estimated by generalised
+// least squares and its uncertainty carried into the predictive variance (Rasmussen &
+// Williams 2006, "Gaussian Processes for Machine Learning", section 2.7, eqs. 2.41-2.43).
+// Generic in the input dimension d and the number m of mean basis functions; the caller
+// evaluates the basis h(x) (and its Jacobian, for derivatives). Notation of the comments:
+// K = k(X, X) + diag(noise), A = H^T K^-1 H (m x m), P = K^-1 - K^-1 H A^-1 H^T K^-1.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "surrogate/matern52_kernel.hpp"
+
+namespace rbcal::surrogate {
+
+// Fixed jitter added to every diagonal element of K (variance units of y), so that K stays
+// numerically positive definite even for noise-free points; sd 1e-5 in y = ln eta_re.
+inline constexpr double kGaussianProcessJitterVariance = 1e-10;
+
+// Log-parametrised hyper-parameters; packed order: [ln s2, ln l_1 .. ln l_d, ln nugget].
+struct GaussianProcessHyperparameters {
+  double log_signal_variance = 0.0;
+  Eigen::VectorXd log_length_scales;
+  double log_nugget_variance = -20.0;  // extra noise variance on every point (model misfit)
+
+  Eigen::VectorXd packed() const;
+  static GaussianProcessHyperparameters unpacked(const Eigen::VectorXd& packed);
+  Matern52Kernel kernel() const;
+};
+
+struct GaussianProcessData {
+  Eigen::MatrixXd inputs;           // n x d, one training point per row
+  Eigen::VectorXd targets;          // n
+  Eigen::VectorXd noise_variances;  // n, known observation noise (>= 0)
+  Eigen::MatrixXd basis;            // n x m, row i = h(x_i)^T
+};
+
+struct GaussianProcessPrediction {
+  double mean = 0.0;               // of the latent h^T beta + f at x (eq. 2.41 with beta integrated out)
+  double variance = 0.0;           // of the latent value (no observation noise, no nugget), eq. 2.42
+  Eigen::VectorXd mean_gradient;   // d mean / d x
+};
+
+// Closed-form leave-one-out predictions of each y_i from all other points, beta
+// re-estimated each time (R&W eqs. 5.10-5.12 with K^-1 replaced by P):
+//   mean_i = y_i - [P y]_i / P_ii,   variance_i = 1 / P_ii (of y_i, noise included).
+struct LeaveOneOutPredictions {
+  Eigen::VectorXd mean;
+  Eigen::VectorXd variance;
+};
+
+class GaussianProcess {
+ public:
+  // Factorises K; throws std::runtime_error if K or A is not positive definite (e.g. a
+  // basis that is rank deficient on the training inputs).
+  GaussianProcess(GaussianProcessData data, GaussianProcessHyperparameters hyperparameters);
+
+  // h_at_x: basis h(x) (m); h_jacobian: d h / d x (m x d).
+  GaussianProcessPrediction predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
+                                    const Eigen::MatrixXd& h_jacobian) const;
+  double latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const;
+
+  // GLS estimate beta = A^-1 H^T K^-1 y (eq. 2.42's beta-bar) and its covariance A^-1.
+  const Eigen::VectorXd& mean_coefficients() const { return beta_; }
+  Eigen::MatrixXd mean_coefficient_covariance() const;
+
+  // log p(y | X, theta) with beta integrated out under a flat prior (eq. 2.43 in the
+  // vague limit, i.e. the restricted likelihood):
+  //   -1/2 y^T P y - 1/2 ln|K| - 1/2 ln|A| - (n - m)/2 ln 2 pi.
+  double log_marginal_likelihood() const;
+  // Its gradient in the packed hyper-parameters (eq. 5.9 with P for K^-1):
+  //   d/d theta_j = 1/2 tr((alpha alpha^T - P) dK/d theta_j),  alpha = P y.
+  Eigen::VectorXd log_marginal_likelihood_gradient() const;
+
+  LeaveOneOutPredictions leave_one_out() const;
+
+  const GaussianProcessData& data() const { return data_; }
+  const GaussianProcessHyperparameters& hyperparameters() const { return hyperparameters_; }
+  // Total diagonal noise variance of point i (noise_i + nugget + jitter).
+  double total_noise_variance(Eigen::Index i) const;
+
+ private:
+  Eigen::MatrixXd projection() const;  // P
+  Eigen::VectorXd cross_covariance(const Eigen::VectorXd& x) const;
+
+  GaussianProcessData data_;
+  GaussianProcessHyperparameters hyperparameters_;
+  Matern52Kernel kernel_;
+  Eigen::LLT<Eigen::MatrixXd> k_cholesky_;  // K = L L^T
+  Eigen::MatrixXd k_inverse_basis_;         // K^-1 H (n x m)
+  Eigen::LLT<Eigen::MatrixXd> a_cholesky_;  // A = H^T K^-1 H
+  Eigen::VectorXd beta_;
+  Eigen::VectorXd alpha_;                   // P y = K^-1 (y - H beta)
+};
+
+}  // namespace rbcal::surrogate

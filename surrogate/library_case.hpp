@@ -1,0 +1,44 @@
+#pragma once
+// One finished solver case of a simulation library, as read from LIB/cases/<id>.json
+// (schema "rbcal.case/1", written by `rbcal simulate` / `rbcal library generate`).
+// Only what the surrogate needs is kept; the case file itself stays the interface
+// between solver/ and surrogate/ (DESIGN.md section 4). All quantities dimensionless.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace rbcal::surrogate {
+
+struct LibraryCase {
+  std::string id;                  // file stem, e.g. "phi0.20_Ca0.10_lam5"
+  std::filesystem::path source;    // the case file it was read from
+  // Nominal parameters (params.*); phi falls back to result.phi_actual when the case
+  // places its cells explicitly and has no params.phi.
+  double phi = 0.0;
+  double capillary_number = 0.0;   // Ca = eta0 gamma_dot a / G_s
+  double viscosity_ratio = 0.0;    // lambda = eta1 / eta0
+  // Results (result.*).
+  double phi_actual = 0.0;         // volume fraction of the seeded cells: the surrogate's input
+  double eta_re = 0.0;             // relative viscosity from the stresslet
+  double eta_re_sem = 0.0;         // its standard error (autocorrelation-aware)
+  double eta_re_wall = 0.0;        // relative viscosity from the wall shear stress
+  double eta_re_wall_sem = 0.0;
+  long long n_cells = 0;
+  long long steps = 0;
+  double wall_seconds = 0.0;
+  // The numerics every case of one library must share (see numerics_signature()).
+  nlohmann::json numerics_signature;
+};
+
+// The fields whose values must agree across a library, as (path, value) pairs of a flat
+// object: numerics.{N_a, tau_out, box, Re, kernel}, cells.{triangles, shape, law},
+// run.window and params.kb_hat.
+const char* const* library_numerics_fields();
+
+// Schema-checks a parsed case; errors read "SOURCE: field result.eta_re_sem: must be ...".
+LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesystem::path& source);
+
+// Reads and checks one case file; malformed JSON is reported with the file and position.
+LibraryCase read_library_case(const std::filesystem::path& file);
+
+}  // namespace rbcal::surrogate

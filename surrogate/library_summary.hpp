@@ -1,0 +1,40 @@
+#pragma once
+// What `rbcal library show` prints: how many cases, their parameter ranges, cost, typical
+// statistical error, and which points of the grid (the plan's, or else the one spanned by
+// the cases' own parameter values) are present or missing.
+#include <string>
+#include <vector>
+
+#include "surrogate/simulation_library.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::surrogate {
+
+struct GridPoint {
+  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
+  bool present = false;  // a finished case has these nominal parameters
+};
+
+struct LibrarySummary {
+  std::string root;
+  std::size_t case_count = 0;
+  ParameterRange nominal_range;        // of params.{phi, Ca, lambda}
+  double phi_actual_min = 0.0, phi_actual_max = 0.0;
+  double eta_re_min = 0.0, eta_re_max = 0.0;
+  double total_wall_seconds = 0.0;
+  double median_eta_re_sem = 0.0;           // absolute
+  double median_relative_eta_re_sem = 0.0;  // eta_re_sem / eta_re
+  bool grid_from_plan = false;              // false: grid spanned by the cases' own values
+  ParameterGrid grid;
+  std::vector<GridPoint> grid_points;       // phi slowest, lambda fastest
+  std::size_t missing_count = 0;
+  std::size_t off_grid_count = 0;           // cases whose parameters are not on the plan's grid
+};
+
+LibrarySummary summarise(const SimulationLibrary& library);
+
+// Human-readable report: totals, ranges, then one block per lambda with a phi x Ca table
+// marking present ('x') and missing ('.') points.
+std::string format_summary(const LibrarySummary& summary);
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,29 @@
+#pragma once
+// A simulation library: a folder LIB/ with finished cases in LIB/cases/<id>.json (plus
+// their <id>.csv time series, not read here), optionally LIB/plan.json (the planned
+// grid) and LIB/work/ (cases in progress, ignored). DESIGN.md section 4.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "surrogate/case_plan.hpp"
+#include "surrogate/library_case.hpp"
+
+namespace rbcal::surrogate {
+
+struct SimulationLibrary {
+  std::filesystem::path root;
+  std::vector<LibraryCase> cases;  // sorted by file name, so every reader sees one order
+  std::optional<ParameterGrid> plan;
+};
+
+// Reads every LIB/cases/*.json and LIB/plan.json if present. Rejects, naming the files:
+// a case that fails its schema check; cases whose numerics (N_a, box, tau_out, Re,
+// kernel, mesh triangles, cell shape, membrane law, averaging window, kb_hat) differ
+// from the first case's; two cases with the same (phi, Ca, lambda); no cases at all.
+SimulationLibrary read_library(const std::filesystem::path& root);
+
+// The same consistency checks on cases already read (first case = reference).
+void check_library_consistency(const std::vector<LibraryCase>& cases);
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,90 @@
+#pragma once
+// The Gaussian-process surrogate of the suspension's relative viscosity (DESIGN.md
+// section 4), implementing ViscosityModel for the calibration stage.
+//
+// Model: universal kriging (gaussian_process.hpp) of y = ln eta_re over
+// x = (phi, ln Ca, ln lambda), phi being the cases' actual volume fraction, with
+//   mean m(x) = phi (b0 + b1 ln Ca + b2 ln lambda)   (the seed study's eta_re = exp(alpha phi),
+//                                                      alpha linear in ln Ca and ln lambda),
+// b by generalised least squares with its uncertainty in the predictive variance; a term
+// whose input is constant over the library (e.g. a single lambda) is left out of the mean
+// and its length scale held at 1. Anisotropic Matern-5/2 kernel; heteroscedastic noise
+// (eta_re_sem / eta_re)^2 per case, plus a fitted nugget and a fixed jitter of 1e-10.
+//
+// Prediction: eta_re = exp(E[y]) (the median of the log-normal predictive, not its mean),
+// sd = eta_re * sd(y) (delta method; sd(y) is the latent sd, without observation noise or
+// nugget), derivatives eta_re * dE[y]/dx (analytic). inside_hull is false outside the
+// bounding box of the library's (phi_actual, Ca, lambda), its phi edges widened by 1 % of
+// the largest phi for the scatter of phi_actual about the planned phi: libraries are grids,
+// so the box is their convex hull (a library with holes or a non-grid design is not
+// checked point by point).
+#include <string>
+#include <vector>
+
+#include "surrogate/gaussian_process.hpp"
+#include "surrogate/leave_one_out_report.hpp"
+#include "surrogate/training_case.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::surrogate {
+
+// How the hyper-parameters were fitted (informational; kept in the surrogate file).
+struct SurrogateFitInfo {
+  double log_marginal_likelihood = 0.0;
+  int starts_tried = 0;
+  int starts_converged = 0;
+};
+
+class ViscositySurrogate final : public ViscosityModel {
+ public:
+  // Fits the hyper-parameters by maximum marginal likelihood (hyperparameter_fit.hpp).
+  static ViscositySurrogate fit(std::vector<TrainingCase> cases, std::string source_library = "");
+
+  // Uses the given hyper-parameters as they are (no fit): a loaded surrogate, or tests.
+  ViscositySurrogate(std::vector<TrainingCase> cases, GaussianProcessHyperparameters hyperparameters,
+                     std::string source_library = "", SurrogateFitInfo fit_info = {});
+
+  ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
+  ParameterRange range() const override { return range_; }
+
+  // Latent predictive sd of ln eta_re (= relative sd of eta_re).
+  double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;
+  bool inside_hull(double phi, double capillary_number, double viscosity_ratio) const;
+
+  LeaveOneOutReport leave_one_out() const;
+
+  // Mean basis: names of the terms used ("phi", "phi ln Ca", "phi ln lambda"), GLS
+  // coefficients and their standard deviations.
+  const std::vector<std::string>& mean_terms() const { return mean_terms_; }
+  Eigen::VectorXd mean_coefficients() const { return process_.mean_coefficients(); }
+  Eigen::VectorXd mean_coefficient_sds() const;
+
+  const std::vector<TrainingCase>& training_cases() const { return cases_; }
+  const GaussianProcess& process() const { return process_; }
+  const std::string& source_library() const { return source_library_; }
+  const SurrogateFitInfo& fit_info() const { return fit_info_; }
+
+  // Input vector x and mean basis h(x) with its Jacobian, as the process sees them.
+  Eigen::VectorXd input(double phi, double capillary_number, double viscosity_ratio) const;
+  Eigen::VectorXd basis(const Eigen::VectorXd& x) const;
+  Eigen::MatrixXd basis_jacobian(const Eigen::VectorXd& x) const;
+
+ private:
+  struct Terms {
+    bool ca = false, lambda = false;  // which of phi ln Ca, phi ln lambda are in the mean
+  };
+  static Terms terms_for(const std::vector<TrainingCase>& cases);
+  static GaussianProcessData process_data(const std::vector<TrainingCase>& cases, Terms terms);
+  static Eigen::VectorXd basis_of(const Eigen::VectorXd& x, Terms terms);
+
+  std::vector<TrainingCase> cases_;
+  std::string source_library_;
+  SurrogateFitInfo fit_info_;
+  Terms terms_;
+  std::vector<std::string> mean_terms_;
+  ParameterRange range_;
+  Eigen::Vector3d lower_, upper_;  // bounding box in (phi, ln Ca, ln lambda)
+  GaussianProcess process_;
+};
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,161 @@
+// The universal-kriging Gaussian process: analytic gradients against finite differences,
+// closed-form leave-one-out against refits, and recovery of known length scales.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "surrogate/gaussian_process.hpp"
+#include "surrogate/hyperparameter_fit.hpp"
+
+namespace rbcal::surrogate {
+namespace {
+
+// Random inputs in [0, 1]^3, basis (x0, x0 x1), smooth targets, heteroscedastic noise.
+GaussianProcessData random_data(int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  GaussianProcessData d;
+  d.inputs.resize(n, 3);
+  d.targets.resize(n);
+  d.noise_variances.resize(n);
+  d.basis.resize(n, 2);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) d.inputs(i, k) = u(rng);
+    const double x0 = d.inputs(i, 0), x1 = d.inputs(i, 1), x2 = d.inputs(i, 2);
+    d.targets(i) = 2.0 * x0 + 0.5 * x0 * x1 + 0.3 * std::sin(3.0 * x2) + 0.1 * x1 * x1;
+    d.noise_variances(i) = 1e-4 * (1.0 + u(rng));
+    d.basis.row(i) << x0, x0 * x1;
+  }
+  return d;
+}
+
+GaussianProcessHyperparameters some_hyperparameters() {
+  GaussianProcessHyperparameters hp;
+  hp.log_signal_variance = std::log(0.2);
+  hp.log_length_scales = Eigen::Vector3d(std::log(0.4), std::log(0.7), std::log(0.3));
+  hp.log_nugget_variance = std::log(3e-5);
+  return hp;
+}
+
+TEST(GaussianProcess, MarginalLikelihoodGradientMatchesFiniteDifferences) {
+  const GaussianProcessData data = random_data(30, 7);
+  const Eigen::VectorXd p = some_hyperparameters().packed();
+  const Eigen::VectorXd analytic = GaussianProcess(data, GaussianProcessHyperparameters::unpacked(p)).log_marginal_likelihood_gradient();
+  for (Eigen::Index j = 0; j < p.size(); ++j) {
+    const double h = 1e-5;
+    Eigen::VectorXd plus = p, minus = p;
+    plus(j) += h, minus(j) -= h;
+    const double numeric = (GaussianProcess(data, GaussianProcessHyperparameters::unpacked(plus)).log_marginal_likelihood() -
+                            GaussianProcess(data, GaussianProcessHyperparameters::unpacked(minus)).log_marginal_likelihood()) /
+                           (2.0 * h);
+    EXPECT_NEAR(analytic(j), numeric, 1e-5 * (1.0 + std::abs(numeric))) << "parameter " << j;
+  }
+}
+
+TEST(GaussianProcess, MeanGradientMatchesFiniteDifferences) {
+  const GaussianProcessData data = random_data(30, 8);
+  const GaussianProcess gp(data, some_hyperparameters());
+  auto basis = [](const Eigen::VectorXd& x) { return Eigen::Vector2d(x(0), x(0) * x(1)); };
+  auto jacobian = [](const Eigen::VectorXd& x) {
+    Eigen::MatrixXd j = Eigen::MatrixXd::Zero(2, 3);
+    j(0, 0) = 1.0, j(1, 0) = x(1), j(1, 1) = x(0);
+    return j;
+  };
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0.3, 0.6, 0.2), Eigen::Vector3d(0.81, 0.12, 0.55)}) {
+    const Eigen::VectorXd gradient = gp.predict(x, basis(x), jacobian(x)).mean_gradient;
+    for (int k = 0; k < 3; ++k) {
+      const double h = 1e-6;
+      Eigen::VectorXd plus = x, minus = x;
+      plus(k) += h, minus(k) -= h;
+      const double numeric =
+          (gp.predict(plus, basis(plus), jacobian(plus)).mean - gp.predict(minus, basis(minus), jacobian(minus)).mean) /
+          (2.0 * h);
+      EXPECT_NEAR(gradient(k), numeric, 1e-6 * (1.0 + std::abs(numeric))) << "dimension " << k;
+    }
+  }
+}
+
+TEST(GaussianProcess, ClosedFormLeaveOneOutEqualsRefitsWithoutEachPoint) {
+  const GaussianProcessData data = random_data(25, 9);
+  const GaussianProcessHyperparameters hp = some_hyperparameters();
+  const GaussianProcess full(data, hp);
+  const LeaveOneOutPredictions loo = full.leave_one_out();
+  const Eigen::Index n = data.targets.size();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    GaussianProcessData rest;
+    rest.inputs.resize(n - 1, 3);
+    rest.targets.resize(n - 1);
+    rest.noise_variances.resize(n - 1);
+    rest.basis.resize(n - 1, 2);
+    for (Eigen::Index r = 0, k = 0; r < n; ++r) {
+      if (r == i) continue;
+      rest.inputs.row(k) = data.inputs.row(r);
+      rest.targets(k) = data.targets(r);
+      rest.noise_variances(k) = data.noise_variances(r);
+      rest.basis.row(k) = data.basis.row(r);
+      ++k;
+    }
+    const GaussianProcess refit(rest, hp);
+    const Eigen::VectorXd x = data.inputs.row(i).transpose(), h = data.basis.row(i).transpose();
+    const GaussianProcessPrediction p = refit.predict(x, h, Eigen::MatrixXd::Zero(2, 3));
+    // Predictive distribution of the noisy y_i: latent variance plus the point's noise.
+    const double variance = p.variance + full.total_noise_variance(i);
+    EXPECT_NEAR(loo.mean(i), p.mean, 1e-8 * (1.0 + std::abs(p.mean))) << "point " << i;
+    EXPECT_NEAR(loo.variance(i), variance, 1e-7 * variance) << "point " << i;
+  }
+}
+
+TEST(GaussianProcess, PredictiveVarianceIncludesMeanCoefficientUncertainty) {
+  // Far from all data the latent variance tends to s2 + h^T A^-1 h (eq. 2.42), more than s2.
+  const GaussianProcessData data = random_data(20, 10);
+  const GaussianProcess gp(data, some_hyperparameters());
+  const Eigen::Vector3d far(40.0, 50.0, 60.0);
+  const Eigen::Vector2d h(far(0), far(0) * far(1));
+  const double expected = std::exp(some_hyperparameters().log_signal_variance) + h.dot(gp.mean_coefficient_covariance() * h);
+  EXPECT_NEAR(gp.latent_variance(far, h), expected, 1e-9 * expected);
+}
+
+TEST(HyperparameterFit, RecoversKnownLengthScalesOfASampledProcess) {
+  // Draw one sample of a zero-mean-plus-constant GP with known hyper-parameters at 250
+  // random points in [0, 1]^3, then fit; ML estimates scatter, so the tolerance is a
+  // factor 1.35 on each length scale and 2 on the signal variance.
+  const int n = 250;
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  GaussianProcessData data;
+  data.inputs.resize(n, 3);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) data.inputs(i, k) = u(rng);
+  const Eigen::Vector3d true_lengths(0.15, 0.3, 0.6);
+  const double true_signal_variance = 0.5, noise_variance = 1e-4;
+  const Matern52Kernel kernel{true_signal_variance, true_lengths};
+  Eigen::MatrixXd k(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      k(i, j) = kernel(data.inputs.row(i).transpose(), data.inputs.row(j).transpose()) + (i == j ? noise_variance : 0.0);
+  Eigen::VectorXd z(n);
+  for (int i = 0; i < n; ++i) z(i) = normal(rng);
+  data.targets = Eigen::MatrixXd(k.llt().matrixL()) * z + Eigen::VectorXd::Constant(n, 1.5);
+  data.noise_variances = Eigen::VectorXd::Constant(n, noise_variance);
+  data.basis = Eigen::MatrixXd::Ones(n, 1);
+
+  const HyperparameterFitResult fit =
+      fit_hyperparameters(data, default_hyperparameter_fit_options(Eigen::Vector3d::Ones(), 0.3));
+  EXPECT_GE(fit.starts_converged, 1) << fit.summary;
+  const Eigen::VectorXd lengths = fit.hyperparameters.log_length_scales.array().exp();
+  std::cout << "fitted length scales " << lengths.transpose() << " (true " << true_lengths.transpose() << "), signal variance "
+            << std::exp(fit.hyperparameters.log_signal_variance) << " (true " << true_signal_variance << ")\n";
+  for (int d = 0; d < 3; ++d)
+    EXPECT_LT(std::abs(std::log(lengths(d) / true_lengths(d))), std::log(1.35))
+        << "dimension " << d << ": fitted " << lengths(d) << ", true " << true_lengths(d);
+  EXPECT_LT(std::abs(fit.hyperparameters.log_signal_variance - std::log(true_signal_variance)), std::log(2.0));
+  // The optimum is a maximum: no start ends higher, and the true parameters score lower.
+  GaussianProcessHyperparameters truth{std::log(true_signal_variance), true_lengths.array().log(), std::log(1e-12)};
+  EXPECT_GE(fit.log_marginal_likelihood, GaussianProcess(data, truth).log_marginal_likelihood());
+}
+
+}  // namespace
+}  // namespace rbcal::surrogate

@@ -1,0 +1,235 @@
+// The viscosity surrogate on libraries drawn from a known function: calibrated bands,
+// derivatives, hull, leave-one-out, JSON round trip, reproducible builds, proposals.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <random>
+
+#include "surrogate/case_proposal.hpp"
+#include "surrogate/json_file.hpp"
+#include "surrogate/surrogate_file.hpp"
+#include "synthetic_library.hpp"
+
+namespace rbcal::surrogate {
+namespace {
+
+using testing::known_log_viscosity;
+using testing::SyntheticGrid;
+using testing::synthetic_training_cases;
+
+const ViscositySurrogate& fitted_surrogate() {
+  static const ViscositySurrogate s = ViscositySurrogate::fit(synthetic_training_cases(SyntheticGrid{}, 11), "synthetic");
+  return s;
+}
+
+TEST(ViscositySurrogate, BandsCoverTheKnownFunctionAtHeldOutPoints) {
+  const ViscositySurrogate& s = fitted_surrogate();
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> phi(0.06, 0.39), ln_ca(std::log(0.012), std::log(0.75)), ln_lambda(0.0, std::log(10.0));
+  const int n = 400;
+  int covered = 0;
+  double worst_relative_error = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double p = phi(rng), ca = std::exp(ln_ca(rng)), lambda = std::exp(ln_lambda(rng));
+    const ViscosityPrediction pred = s.predict(p, ca, lambda);
+    const double truth = std::exp(known_log_viscosity(p, ca, lambda));
+    if (std::abs(pred.eta_re - truth) <= 1.96 * pred.sd) ++covered;
+    worst_relative_error = std::max(worst_relative_error, std::abs(pred.eta_re - truth) / truth);
+    EXPECT_TRUE(pred.inside_hull);
+  }
+  const double coverage = static_cast<double>(covered) / n;
+  EXPECT_GE(coverage, 0.85);
+  EXPECT_LE(coverage, 0.99);
+  EXPECT_LT(worst_relative_error, 0.05);
+  std::cout << "coverage of 95 % bands: " << coverage << ", worst relative error " << worst_relative_error << "\n";
+}
+
+TEST(ViscositySurrogate, DerivativesMatchFiniteDifferences) {
+  const ViscositySurrogate& s = fitted_surrogate();
+  for (const auto& [phi, ca, lambda] : {std::tuple{0.17, 0.07, 3.0}, std::tuple{0.33, 0.5, 8.0}, std::tuple{0.5, 2.0, 20.0}}) {
+    const ViscosityPrediction p = s.predict(phi, ca, lambda);
+    const double h = 1e-6;
+    const double d_phi = (s.predict(phi + h, ca, lambda).eta_re - s.predict(phi - h, ca, lambda).eta_re) / (2 * h);
+    const double d_ln_ca =
+        (s.predict(phi, ca * std::exp(h), lambda).eta_re - s.predict(phi, ca * std::exp(-h), lambda).eta_re) / (2 * h);
+    const double d_ln_lambda =
+        (s.predict(phi, ca, lambda * std::exp(h)).eta_re - s.predict(phi, ca, lambda * std::exp(-h)).eta_re) / (2 * h);
+    EXPECT_NEAR(p.d_phi, d_phi, 1e-6 * (1 + std::abs(d_phi)));
+    EXPECT_NEAR(p.d_ln_ca, d_ln_ca, 1e-6 * (1 + std::abs(d_ln_ca)));
+    EXPECT_NEAR(p.d_ln_lambda, d_ln_lambda, 1e-6 * (1 + std::abs(d_ln_lambda)));
+  }
+}
+
+TEST(ViscositySurrogate, DerivativesFollowTheKnownFunction) {
+  // Inside the library the fitted slopes are those of the truth to within a few per cent.
+  const ViscositySurrogate& s = fitted_surrogate();
+  const double phi = 0.25, ca = 0.1, lambda = 5.0, h = 1e-5;
+  const double eta = std::exp(known_log_viscosity(phi, ca, lambda));
+  const double d_phi = eta * (known_log_viscosity(phi + h, ca, lambda) - known_log_viscosity(phi - h, ca, lambda)) / (2 * h);
+  const double d_ln_ca = eta *
+                         (known_log_viscosity(phi, ca * std::exp(h), lambda) - known_log_viscosity(phi, ca * std::exp(-h), lambda)) /
+                         (2 * h);
+  const ViscosityPrediction p = s.predict(phi, ca, lambda);
+  EXPECT_NEAR(p.d_phi, d_phi, 0.05 * std::abs(d_phi));
+  EXPECT_NEAR(p.d_ln_ca, d_ln_ca, 0.1 * std::abs(d_ln_ca));
+}
+
+TEST(ViscositySurrogate, FlagsQueriesOutsideTheLibraryBox) {
+  const ViscositySurrogate& s = fitted_surrogate();
+  const ParameterRange r = s.range();
+  EXPECT_NEAR(r.ca_min, 0.01, 1e-12);
+  EXPECT_NEAR(r.lambda_max, 10.0, 1e-12);
+  EXPECT_TRUE(s.predict(0.2, 0.1, 5.0).inside_hull);
+  EXPECT_TRUE(s.predict(0.2, 0.01, 10.0).inside_hull);  // on the boundary
+  EXPECT_FALSE(s.predict(0.45, 0.1, 5.0).inside_hull);
+  EXPECT_FALSE(s.predict(0.41, 0.1, 5.0).inside_hull);
+  // The planned grid's edges are inside although phi_actual scatters about the nominal phi.
+  for (const double phi : SyntheticGrid{}.phi) EXPECT_TRUE(s.predict(phi, 0.8, 1.0).inside_hull) << phi;
+  EXPECT_FALSE(s.predict(0.2, 0.005, 5.0).inside_hull);
+  EXPECT_FALSE(s.predict(0.2, 0.1, 0.5).inside_hull);
+  // Outside, the band widens (relative sd = sd of ln eta_re).
+  auto relative_sd = [&](double phi, double ca, double lambda) {
+    const ViscosityPrediction p = s.predict(phi, ca, lambda);
+    return p.sd / p.eta_re;
+  };
+  EXPECT_GT(relative_sd(0.2, 0.002, 5.0), 1.3 * relative_sd(0.2, 0.1, 5.0));
+  EXPECT_GT(relative_sd(0.6, 0.1, 5.0), 2.0 * relative_sd(0.35, 0.1, 5.0));
+}
+
+TEST(ViscositySurrogate, LeaveOneOutResidualsAreCalibrated) {
+  const LeaveOneOutReport loo = fitted_surrogate().leave_one_out();
+  ASSERT_EQ(loo.cases.size(), fitted_surrogate().training_cases().size());
+  EXPECT_GT(loo.rms_standardised_residual, 0.6);
+  EXPECT_LT(loo.rms_standardised_residual, 1.5);
+  EXPECT_LT(loo.rms_relative_error, 0.03);
+  EXPECT_NE(format_leave_one_out(loo).find("RMS relative error"), std::string::npos);
+}
+
+TEST(ViscositySurrogate, DropsMeanTermsOfInputsConstantOverTheLibrary) {
+  SyntheticGrid grid;
+  grid.lambda = {5.0};
+  const ViscositySurrogate s = ViscositySurrogate::fit(synthetic_training_cases(grid, 3));
+  EXPECT_EQ(s.mean_terms(), (std::vector<std::string>{"phi", "phi ln Ca"}));
+  const ViscosityPrediction p = s.predict(0.22, 0.2, 5.0);
+  EXPECT_NEAR(std::log(p.eta_re), known_log_viscosity(0.22, 0.2, 5.0), 0.02);
+  EXPECT_TRUE(p.inside_hull);
+  EXPECT_FALSE(s.predict(0.22, 0.2, 6.0).inside_hull);
+}
+
+TEST(SurrogateFile, LoadedSurrogatePredictsBitIdentically) {
+  const auto folder = testing::fresh_temp_folder("round_trip");
+  const ViscositySurrogate& s = fitted_surrogate();
+  save_surrogate(s, folder / "surrogate.json");
+  const ViscositySurrogate loaded = load_surrogate(folder / "surrogate.json");
+  for (const auto& [phi, ca, lambda] :
+       {std::tuple{0.17, 0.07, 3.0}, std::tuple{0.33, 0.5, 8.0}, std::tuple{0.05, 0.01, 1.0}, std::tuple{0.6, 3.0, 30.0}}) {
+    const ViscosityPrediction a = s.predict(phi, ca, lambda), b = loaded.predict(phi, ca, lambda);
+    EXPECT_EQ(a.eta_re, b.eta_re);
+    EXPECT_EQ(a.sd, b.sd);
+    EXPECT_EQ(a.d_phi, b.d_phi);
+    EXPECT_EQ(a.d_ln_ca, b.d_ln_ca);
+    EXPECT_EQ(a.d_ln_lambda, b.d_ln_lambda);
+    EXPECT_EQ(a.inside_hull, b.inside_hull);
+  }
+  EXPECT_EQ(loaded.source_library(), "synthetic");
+  nlohmann::json a = surrogate_to_json(s), b = surrogate_to_json(loaded);
+  a.erase("provenance"), b.erase("provenance");
+  EXPECT_EQ(a, b);
+}
+
+TEST(SurrogateFile, BuildingTwiceFromALibraryGivesIdenticalContent) {
+  const auto root = testing::fresh_temp_folder("build_twice");
+  SyntheticGrid grid;
+  grid.phi = {0.1, 0.2, 0.3, 0.4};
+  grid.ca = {0.02, 0.1, 0.5};
+  testing::write_synthetic_library(root, grid, 17);
+  setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  save_surrogate(build_surrogate(root), root / "first.json");
+  save_surrogate(build_surrogate(root), root / "second.json");
+  unsetenv("SOURCE_DATE_EPOCH");
+  const nlohmann::json first = read_json_file(root / "first.json"), second = read_json_file(root / "second.json");
+  EXPECT_EQ(first.dump(), second.dump());
+  EXPECT_EQ(first["provenance"]["date"], "2023-11-14T22:13:20Z");
+  EXPECT_EQ(first["training"].size(), grid.phi.size() * grid.ca.size() * grid.lambda.size());
+  EXPECT_EQ(first["source_library"], root.string());
+}
+
+TEST(SurrogateFile, RejectsBadFilesNamingTheField) {
+  nlohmann::json j = surrogate_to_json(fitted_surrogate());
+  auto message = [](const nlohmann::json& bad) {
+    try {
+      surrogate_from_json(bad, "s.json");
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  nlohmann::json bad = j;
+  bad["schema"] = "rbcal.surrogate/2";
+  EXPECT_NE(message(bad).find("s.json: field schema"), std::string::npos);
+  bad = j;
+  bad["hyperparameters"].erase("log_nugget_variance");
+  EXPECT_NE(message(bad).find("s.json: field hyperparameters.log_nugget_variance: missing"), std::string::npos);
+  bad = j;
+  bad["training"][3]["noise_variance"] = -1.0;
+  EXPECT_NE(message(bad).find("s.json: field training.3.noise_variance: must be a non-negative number"), std::string::npos)
+      << message(bad);
+}
+
+TEST(CaseProposal, ProposesTheHoleInTheLibraryFirst) {
+  // Drop the corner phi >= 0.25, Ca <= 0.03 (all lambda): the largest variance is there.
+  SyntheticGrid full;
+  auto in_hole = [](double phi, double ln_ca) { return phi >= 0.245 && ln_ca <= std::log(0.031); };
+  std::vector<TrainingCase> cases;
+  for (const TrainingCase& c : synthetic_training_cases(full, 21))
+    if (!in_hole(c.phi, c.ln_ca)) cases.push_back(c);
+  const ViscositySurrogate s = ViscositySurrogate::fit(cases);
+  const ParameterGrid candidates{full.phi, full.ca, full.lambda};
+  const std::vector<ProposedCase> proposals = propose_cases(s, candidates, 4);
+  ASSERT_EQ(proposals.size(), 4u);
+  for (const ProposedCase& p : proposals) {
+    EXPECT_TRUE(in_hole(p.phi, std::log(p.capillary_number))) << p.phi << " " << p.capillary_number;
+    EXPECT_TRUE(p.inside_hull);
+  }
+  // The first choice has the largest variance of the whole grid.
+  for (double phi : full.phi)
+    for (double ca : full.ca)
+      for (double lambda : full.lambda) EXPECT_LE(s.log_viscosity_sd(phi, ca, lambda), proposals[0].relative_sd);
+}
+
+TEST(CaseProposal, EachChoiceIsTheMaximumAfterAddingTheEarlierOnes) {
+  SyntheticGrid grid;
+  grid.phi = {0.1, 0.25, 0.4};
+  grid.ca = {0.01, 0.1, 0.8};
+  const std::vector<TrainingCase> cases = synthetic_training_cases(grid, 4);
+  const ViscositySurrogate s = ViscositySurrogate::fit(cases);
+  const ParameterGrid candidates = refined(ParameterGrid{grid.phi, grid.ca, grid.lambda});
+  const std::vector<ProposedCase> proposals = propose_cases(s, candidates, 3);
+  ASSERT_EQ(proposals.size(), 3u);
+  EXPECT_EQ(proposals[0].relative_sd_when_chosen, proposals[0].relative_sd);
+  // Rebuild by hand: add the first proposal with the median noise, then the second must be the maximum.
+  std::vector<double> noise;
+  for (const TrainingCase& c : cases) noise.push_back(c.noise_variance);
+  std::sort(noise.begin(), noise.end());
+  std::vector<TrainingCase> augmented = cases;
+  augmented.push_back({"p1", proposals[0].phi, std::log(proposals[0].capillary_number),
+                       std::log(proposals[0].viscosity_ratio), 0.0, noise[noise.size() / 2]});
+  const ViscositySurrogate after(augmented, s.process().hyperparameters());
+  double largest = 0.0;
+  for (double phi : candidates.phi)
+    for (double ca : candidates.capillary_number)
+      for (double lambda : candidates.viscosity_ratio) largest = std::max(largest, after.log_viscosity_sd(phi, ca, lambda));
+  EXPECT_DOUBLE_EQ(proposals[1].relative_sd_when_chosen, largest);
+  EXPECT_LT(after.log_viscosity_sd(proposals[0].phi, proposals[0].capillary_number, proposals[0].viscosity_ratio),
+            0.8 * proposals[0].relative_sd);
+  for (std::size_t i = 1; i < proposals.size(); ++i) {
+    EXPECT_LE(proposals[i].relative_sd_when_chosen, proposals[i - 1].relative_sd_when_chosen * (1 + 1e-12));
+    EXPECT_FALSE(proposals[i].phi == proposals[0].phi && proposals[i].capillary_number == proposals[0].capillary_number &&
+                 proposals[i].viscosity_ratio == proposals[0].viscosity_ratio);
+  }
+}
+
+}  // namespace
+}  // namespace rbcal::surrogate
