@@ -35,6 +35,8 @@ CalibrationInput make_calibration_input(const RheometerData& data, const PlasmaV
       point.eta_re = row.viscosity / eta0;
       const double relative_se = row.viscosity_sd / std::sqrt(static_cast<double>(row.repeats)) / row.viscosity;
       point.eta_re_sd = point.eta_re * std::hypot(relative_se, relative_se0);
+      point.viscosity = row.viscosity;
+      point.viscosity_se = relative_se * row.viscosity;
       point.line = row.line;
       sample.points.push_back(point);
     }

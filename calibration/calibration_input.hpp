@@ -17,8 +17,13 @@ struct RelativeViscosityPoint {
   // Standard deviation of eta_re: first-order propagation of the standard error of the mean
   // viscosity (sd / sqrt(n)) and of eta0's standard error, treated as independent:
   // sd(eta_re) = eta_re * sqrt((se_eta / eta)^2 + (se_eta0 / eta0)^2).
+  // This sd treats eta0 as known up to independent per-point errors; the methods that take eta0
+  // as a nuisance parameter use viscosity and viscosity_se below instead (eta0's error is common
+  // to every point of a sample and, since eta_re depends weakly on Ca, dominates G_s's error).
   double eta_re_sd = 0.0;
-  int line = 0;  // source line, 0 for synthetic points
+  double viscosity = 0.0;     // measured mean viscosity [Pa s] (0 for points given as eta_re only)
+  double viscosity_se = 0.0;  // its standard error sd / sqrt(n) [Pa s]
+  int line = 0;               // source line, 0 for synthetic points
 };
 
 struct SampleData {

@@ -15,47 +15,72 @@ namespace rbcal::calibration {
 
 namespace {
 
+// The parameters as Ceres sees them: three blocks of size one (some held constant).
+struct FitParameters {
+  double ln_shear_modulus = 0.0;
+  double ln_lambda = 0.0;
+  double ln_plasma_viscosity = 0.0;
+};
+
 // (eta_re - model) / sqrt(measurement var + model var); differentiated numerically so that the
 // dependence of the model's sd on the parameters is part of the Jacobian too.
 struct WeightedResidual {
   ViscosityObservation observation;
   RelativeViscosityPoint point;
-  bool operator()(const double* ln_shear_modulus, const double* ln_lambda, double* residual) const {
-    const auto p = observation.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]));
-    residual[0] = (point.eta_re - p.eta_re) / std::sqrt(point.eta_re_sd * point.eta_re_sd + p.sd * p.sd);
+  bool plasma_viscosity_is_parameter = false;
+  bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
+                  double* residual) const {
+    ViscosityObservation at = observation;
+    at.plasma_viscosity = std::exp(ln_plasma_viscosity[0]);
+    const auto measured = observed_relative_viscosity(point, plasma_viscosity_is_parameter, at.plasma_viscosity);
+    const auto p = at.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]));
+    residual[0] = (measured.eta_re - p.eta_re) / std::sqrt(measured.sd * measured.sd + p.sd * p.sd);
     return std::isfinite(residual[0]);
+  }
+  double operator()(const FitParameters& x) const {
+    double r = 0.0;
+    (*this)(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &r);
+    return r;
   }
 };
 
-double weighted_residual(const ViscosityObservation& obs, const RelativeViscosityPoint& point, double ln_gs,
-                         double ln_lambda) {
-  double r = 0.0;
-  WeightedResidual{obs, point}(&ln_gs, &ln_lambda, &r);
-  return r;
-}
+// The plateau estimate of eta0 as a Gaussian prior on ln eta0, written as a residual.
+struct PlasmaViscosityPrior {
+  double ln_estimate;
+  double relative_standard_error;
+  template <typename T>
+  bool operator()(const T* ln_plasma_viscosity, T* residual) const {
+    residual[0] = (ln_plasma_viscosity[0] - ln_estimate) / relative_standard_error;
+    return true;
+  }
+};
 
 std::vector<bool> select_inside(const ViscosityObservation& obs, const std::vector<RelativeViscosityPoint>& points,
-                                double ln_gs, double lambda) {
+                                const FitParameters& x) {
+  ViscosityObservation at = obs;
+  at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
   std::vector<bool> inside(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) inside[i] = obs.inside_range(points[i], std::exp(ln_gs), lambda);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    inside[i] = at.inside_range(points[i], std::exp(x.ln_shear_modulus), std::exp(x.ln_lambda));
   return inside;
 }
 
-// The grid node with the smallest mean squared weighted residual among those where at least half
-// as many points as at the best-covered node are inside the model's range.
-double scan_start(const ViscosityObservation& obs, const std::vector<RelativeViscosityPoint>& points,
-                  const DirectFitOptions& options, double ln_lambda) {
+// The grid node of ln G_s with the smallest mean squared weighted residual among those where at
+// least half as many points as at the best-covered node are inside the model's range.
+double scan_start(const std::vector<WeightedResidual>& residuals, const ViscosityObservation& obs,
+                  const std::vector<RelativeViscosityPoint>& points, const DirectFitOptions& options,
+                  FitParameters x) {
   const double lo = std::log(options.shear_modulus_min), hi = std::log(options.shear_modulus_max);
   const int n = std::max(2, options.start_grid_points);
   std::vector<int> counts(n);
   std::vector<double> scores(n);
   for (int k = 0; k < n; ++k) {
-    const double x = lo + (hi - lo) * k / (n - 1);
-    const auto inside = select_inside(obs, points, x, std::exp(ln_lambda));
+    x.ln_shear_modulus = lo + (hi - lo) * k / (n - 1);
+    const auto inside = select_inside(obs, points, x);
     double sum = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i)
       if (inside[i]) {
-        sum += std::pow(weighted_residual(obs, points[i], x, ln_lambda), 2);
+        sum += std::pow(residuals[i](x), 2);
         ++counts[k];
       }
     scores[k] = counts[k] > 0 ? sum / counts[k] : std::numeric_limits<double>::infinity();
@@ -76,49 +101,89 @@ ceres::LossFunction* make_loss(const DirectFitOptions& options) {
   return nullptr;
 }
 
+// Laplace covariance (J^T J)^-1 of the free blocks at the estimate; false if Ceres reports a
+// rank-deficient Jacobian or the result is not a finite, positive-diagonal matrix.
+bool laplace_covariance(ceres::Problem& problem, const std::vector<double*>& free_blocks, Eigen::MatrixXd* out) {
+  ceres::Covariance::Options cov_options;
+  cov_options.num_threads = 1;
+  // SPARSE_QR (the default) reports a rank-deficient Jacobian as a failure; DENSE_SVD would not
+  // for an all-zero Jacobian (its relative singular-value test has nothing to compare with).
+  cov_options.algorithm_type = ceres::SPARSE_QR;
+  ceres::Covariance covariance(cov_options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (std::size_t i = 0; i < free_blocks.size(); ++i)
+    for (std::size_t j = i; j < free_blocks.size(); ++j) pairs.push_back({free_blocks[i], free_blocks[j]});
+  const auto n = static_cast<Eigen::Index>(free_blocks.size());
+  *out = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
+  if (!covariance.Compute(pairs, &problem)) return false;
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i; j < n; ++j) {
+      covariance.GetCovarianceBlock(free_blocks[i], free_blocks[j], &(*out)(i, j));
+      (*out)(j, i) = (*out)(i, j);
+    }
+  return out->allFinite() && (out->diagonal().array() > 0.0).all();
+}
+
 }  // namespace
 
 DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
                            const DirectFitOptions& options) {
   const ViscosityObservation obs{&model, sample.plasma.eta0, options.cell_radius};
   const surrogate::ParameterRange range = model.range();
+  const bool fit_eta0 = options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample);
   DirectFitResult result;
-  result.plasma_viscosity = sample.plasma.eta0;
+  result.plasma_viscosity_fitted = fit_eta0;
   result.parameter_names = {"ln_G_s"};
   if (options.fit_lambda) result.parameter_names.push_back("ln_lambda");
+  if (fit_eta0) result.parameter_names.push_back("ln_eta0");
   const int parameters = static_cast<int>(result.parameter_names.size());
+  const int fitted_to_data = options.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
 
-  double ln_lambda = std::log(options.lambda);
+  FitParameters x;
+  x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
+  x.ln_lambda = std::log(options.lambda);
   const double ln_lambda_lo = std::log(std::max(range.lambda_min, 1e-300));
   const double ln_lambda_hi = std::log(std::max(range.lambda_max, 1e-300));
-  if (options.fit_lambda) ln_lambda = std::clamp(ln_lambda, ln_lambda_lo, ln_lambda_hi);
-  double ln_gs = scan_start(obs, sample.points, options, ln_lambda);
+  if (options.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
+  std::vector<WeightedResidual> residuals;
+  for (const auto& p : sample.points) residuals.push_back({obs, p, fit_eta0});
+  x.ln_shear_modulus = scan_start(residuals, obs, sample.points, options, x);
   const double ln_gs_lo = std::log(options.shear_modulus_min), ln_gs_hi = std::log(options.shear_modulus_max);
 
-  std::vector<bool> used = select_inside(obs, sample.points, ln_gs, std::exp(ln_lambda));
-  ceres::Solver::Summary summary;
+  std::vector<bool> used = select_inside(obs, sample.points, x);
   for (int round = 0; round < std::max(1, options.max_selection_rounds); ++round) {
     const int n_used = static_cast<int>(std::count(used.begin(), used.end(), true));
-    if (n_used < parameters) {
+    if (n_used < fitted_to_data) {
       std::ostringstream what;
       what << "sample '" << sample.name << "': " << n_used << " point(s) inside the model's range, need at least "
-           << parameters;
+           << fitted_to_data;
       throw std::invalid_argument(what.str());
     }
     ceres::Problem problem;
     for (std::size_t i = 0; i < sample.points.size(); ++i) {
       if (!used[i]) continue;
-      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1>(
-          new WeightedResidual{obs, sample.points[i]});
-      problem.AddResidualBlock(cost, make_loss(options), &ln_gs, &ln_lambda);
+      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1>(
+          new WeightedResidual(residuals[i]));
+      problem.AddResidualBlock(cost, make_loss(options), &x.ln_shear_modulus, &x.ln_lambda,
+                               &x.ln_plasma_viscosity);
     }
-    problem.SetParameterLowerBound(&ln_gs, 0, ln_gs_lo);
-    problem.SetParameterUpperBound(&ln_gs, 0, ln_gs_hi);
+    std::vector<double*> free_blocks = {&x.ln_shear_modulus};
+    problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, ln_gs_lo);
+    problem.SetParameterUpperBound(&x.ln_shear_modulus, 0, ln_gs_hi);
     if (options.fit_lambda) {
-      problem.SetParameterLowerBound(&ln_lambda, 0, ln_lambda_lo);
-      problem.SetParameterUpperBound(&ln_lambda, 0, ln_lambda_hi);
+      problem.SetParameterLowerBound(&x.ln_lambda, 0, ln_lambda_lo);
+      problem.SetParameterUpperBound(&x.ln_lambda, 0, ln_lambda_hi);
+      free_blocks.push_back(&x.ln_lambda);
     } else {
-      problem.SetParameterBlockConstant(&ln_lambda);
+      problem.SetParameterBlockConstant(&x.ln_lambda);
+    }
+    if (fit_eta0) {
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PlasmaViscosityPrior, 1, 1>(new PlasmaViscosityPrior{
+                                   std::log(sample.plasma.eta0), sample.plasma.standard_error / sample.plasma.eta0}),
+                               nullptr, &x.ln_plasma_viscosity);
+      free_blocks.push_back(&x.ln_plasma_viscosity);
+    } else {
+      problem.SetParameterBlockConstant(&x.ln_plasma_viscosity);
     }
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;  // bounds need it
@@ -129,38 +194,17 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     solver_options.function_tolerance = 1e-12;
     solver_options.parameter_tolerance = 1e-12;
     solver_options.gradient_tolerance = 1e-14;
+    ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
 
-    const std::vector<bool> now_inside = select_inside(obs, sample.points, ln_gs, std::exp(ln_lambda));
+    const std::vector<bool> now_inside = select_inside(obs, sample.points, x);
     const bool last_round = round + 1 == std::max(1, options.max_selection_rounds);
     if (now_inside == used || last_round) {
       if (now_inside != used)
         result.messages.push_back("the set of points inside the model's range still changed after the last refit");
       result.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
       result.solver_report = summary.BriefReport();
-      // Laplace covariance from the Jacobian at the estimate (Ceres: (J^T J)^-1).
-      ceres::Covariance::Options cov_options;
-      cov_options.num_threads = 1;
-      // SPARSE_QR (the default) reports a rank-deficient Jacobian as a failure; DENSE_SVD would not
-      // for an all-zero Jacobian (its relative singular-value test has nothing to compare with).
-      cov_options.algorithm_type = ceres::SPARSE_QR;
-      ceres::Covariance covariance(cov_options);
-      std::vector<std::pair<const double*, const double*>> blocks = {{&ln_gs, &ln_gs}};
-      if (options.fit_lambda) {
-        blocks.push_back({&ln_gs, &ln_lambda});
-        blocks.push_back({&ln_lambda, &ln_lambda});
-      }
-      result.covariance = Eigen::MatrixXd::Zero(parameters, parameters);
-      result.covariance_ok = covariance.Compute(blocks, &problem);
-      if (result.covariance_ok) {
-        covariance.GetCovarianceBlock(&ln_gs, &ln_gs, &result.covariance(0, 0));
-        if (options.fit_lambda) {
-          covariance.GetCovarianceBlock(&ln_gs, &ln_lambda, &result.covariance(0, 1));
-          covariance.GetCovarianceBlock(&ln_lambda, &ln_lambda, &result.covariance(1, 1));
-          result.covariance(1, 0) = result.covariance(0, 1);
-        }
-        result.covariance_ok = result.covariance.allFinite() && (result.covariance.diagonal().array() > 0.0).all();
-      }
+      result.covariance_ok = laplace_covariance(problem, free_blocks, &result.covariance);
       if (!result.covariance_ok) {
         result.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
         result.messages.push_back("Laplace covariance failed (Jacobian rank deficient): no interval");
@@ -171,25 +215,30 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   }
 
   result.estimate.resize(parameters);
-  result.estimate(0) = ln_gs;
-  if (options.fit_lambda) result.estimate(1) = ln_lambda;
-  result.shear_modulus = std::exp(ln_gs);
-  result.lambda = std::exp(ln_lambda);
+  result.estimate(0) = x.ln_shear_modulus;
+  if (options.fit_lambda) result.estimate(1) = x.ln_lambda;
+  if (fit_eta0) result.estimate(parameters - 1) = x.ln_plasma_viscosity;
+  result.shear_modulus = std::exp(x.ln_shear_modulus);
+  result.lambda = std::exp(x.ln_lambda);
+  result.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
   const double bound_tolerance = 1e-6;
-  result.at_bound = ln_gs - ln_gs_lo < bound_tolerance || ln_gs_hi - ln_gs < bound_tolerance ||
-                    (options.fit_lambda &&
-                     (ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - ln_lambda < bound_tolerance));
+  result.at_bound =
+      x.ln_shear_modulus - ln_gs_lo < bound_tolerance || ln_gs_hi - x.ln_shear_modulus < bound_tolerance ||
+      (options.fit_lambda &&
+       (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance));
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
+  ViscosityObservation at_estimate = obs;
+  at_estimate.plasma_viscosity = result.plasma_viscosity;
   for (std::size_t i = 0; i < sample.points.size(); ++i) {
     FittedPoint f;
     f.point = sample.points[i];
     f.used = used[i];
-    f.capillary_number = obs.capillary_number_at(f.point, result.shear_modulus);
-    const auto p = obs.predict(f.point, result.shear_modulus, result.lambda);
+    f.capillary_number = at_estimate.capillary_number_at(f.point, result.shear_modulus);
+    const auto p = at_estimate.predict(f.point, result.shear_modulus, result.lambda);
     f.predicted_eta_re = p.eta_re;
     f.predicted_sd = p.sd;
-    f.weighted_residual = weighted_residual(obs, f.point, ln_gs, ln_lambda);
+    f.weighted_residual = residuals[i](x);
     if (!f.used) {
       std::ostringstream why;
       why << "outside the model's range (phi " << f.point.phi << ", Ca " << f.capillary_number << ", lambda "
@@ -201,7 +250,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     }
     result.points.push_back(f);
   }
-  result.degrees_of_freedom -= parameters;
+  result.degrees_of_freedom -= fitted_to_data;
   const int skipped = static_cast<int>(std::count(used.begin(), used.end(), false));
   if (skipped > 0)
     result.messages.push_back(std::to_string(skipped) + " point(s) outside the model's range were not fitted");
@@ -210,11 +259,12 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     result.covariance *= result.chi_square / result.degrees_of_freedom;
   const double z = boost::math::quantile(boost::math::normal(), 0.5 * (1.0 + options.interval_level));
   result.ln_shear_modulus_sd = std::sqrt(result.covariance(0, 0));
-  result.shear_modulus_interval = {std::exp(ln_gs - z * result.ln_shear_modulus_sd),
-                                   std::exp(ln_gs + z * result.ln_shear_modulus_sd), options.interval_level};
+  result.shear_modulus_interval = {std::exp(x.ln_shear_modulus - z * result.ln_shear_modulus_sd),
+                                   std::exp(x.ln_shear_modulus + z * result.ln_shear_modulus_sd),
+                                   options.interval_level};
   if (options.fit_lambda) {
     const double sd = std::sqrt(result.covariance(1, 1));
-    result.lambda_interval = {std::exp(ln_lambda - z * sd), std::exp(ln_lambda + z * sd), options.interval_level};
+    result.lambda_interval = {std::exp(x.ln_lambda - z * sd), std::exp(x.ln_lambda + z * sd), options.interval_level};
   } else {
     result.lambda_interval = {result.lambda, result.lambda, options.interval_level};
   }

@@ -1,6 +1,9 @@
 #pragma once
 // Direct fit of ln G_s (optionally ln lambda) to all eta_re(phi, gamma_dot) points inside the
 // model's range by weighted least squares (Ceres), with a Laplace (Gauss-Newton) covariance.
+// eta0 is by default a nuisance parameter ln eta0 with the plateau estimate as a Gaussian prior
+// (a prior residual (ln eta0 - ln eta0_hat) / (se / eta0_hat)), so that its error, common to all
+// points, reaches G_s's interval.
 #include <string>
 #include <vector>
 
@@ -19,6 +22,9 @@ struct DirectFitOptions {
   double cell_radius = kDefaultCellRadius;  // a [m]
   double lambda = 5.0;                      // fixed viscosity ratio, or the start when fit_lambda
   bool fit_lambda = false;
+  // Fit ln eta0 with its plateau prior when the sample allows it (plasma standard error > 0 and
+  // absolute viscosities on every point); otherwise eta0 is fixed and its error is in eta_re_sd.
+  bool plasma_viscosity_as_parameter = true;
   double shear_modulus_min = 1e-8;  // bounds on G_s [N/m]; ln lambda is bounded by the model's range
   double shear_modulus_max = 1e-3;
   RobustLoss loss = RobustLoss::none;
@@ -41,7 +47,7 @@ struct FittedPoint {
 };
 
 struct DirectFitResult {
-  std::vector<std::string> parameter_names;  // "ln_G_s" and, when fitted, "ln_lambda"
+  std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0"
   Eigen::VectorXd estimate;                  // in that order
   Eigen::MatrixXd covariance;                // Laplace covariance of the estimate
   bool covariance_ok = false;                // false: Covariance::Compute failed (rank deficient)
@@ -54,7 +60,8 @@ struct DirectFitResult {
   bool converged = false;
   double chi_square = 0.0;  // sum of squared weighted residuals over used points
   int degrees_of_freedom = 0;
-  double plasma_viscosity = 0.0;  // eta0 used [Pa s]
+  double plasma_viscosity = 0.0;   // eta0 at the estimate [Pa s] (the plateau value when fixed)
+  bool plasma_viscosity_fitted = false;
   std::vector<FittedPoint> points;
   std::vector<std::string> messages;
   std::string solver_report;  // Ceres' brief report of the last solve

@@ -20,17 +20,20 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
                                const McmcCalibrationOptions& options) {
   McmcCalibration out;
   out.plasma_viscosity = sample.plasma.eta0;
+  out.plasma_viscosity_standard_error = sample.plasma.standard_error;
   DirectFitOptions fit_options = options.start_fit;
   fit_options.cell_radius = options.posterior.cell_radius;
   fit_options.lambda = options.posterior.lambda;
   fit_options.fit_lambda = options.posterior.fit_lambda;
+  fit_options.plasma_viscosity_as_parameter = options.posterior.plasma_viscosity_as_parameter;
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
   out.start_fit = fit_direct(sample, model, fit_options);
   for (const auto& f : out.start_fit.points)
     if (f.used) out.points.push_back(f.point);
 
-  const LogPosterior posterior(model, sample.plasma.eta0, out.points, options.posterior);
+  const LogPosterior posterior(model, sample.plasma.eta0, out.points, options.posterior,
+                               sample.plasma.standard_error);
   out.posterior = posterior.options();
   const int d = posterior.dimension();
   McmcStart start{Eigen::VectorXd::Zero(d), Eigen::VectorXd::Constant(d, 0.1)};
@@ -39,6 +42,14 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   if (posterior.lambda_index() >= 0) {
     start.center(posterior.lambda_index()) = out.start_fit.estimate(1);
     if (out.start_fit.covariance_ok) start.scale(posterior.lambda_index()) = std::sqrt(out.start_fit.covariance(1, 1));
+  }
+  if (posterior.plasma_viscosity_index() >= 0) {
+    const int last = static_cast<int>(out.start_fit.estimate.size()) - 1;
+    start.center(posterior.plasma_viscosity_index()) = std::log(out.start_fit.plasma_viscosity);
+    if (out.start_fit.plasma_viscosity_fitted && out.start_fit.covariance_ok)
+      start.scale(posterior.plasma_viscosity_index()) = std::sqrt(out.start_fit.covariance(last, last));
+    else
+      start.scale(posterior.plasma_viscosity_index()) = sample.plasma.standard_error / sample.plasma.eta0;
   }
   if (posterior.discrepancy_index() >= 0) {
     start.center(posterior.discrepancy_index()) = std::log(options.posterior.discrepancy_prior_median);
@@ -62,6 +73,13 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   if (posterior.discrepancy_index() >= 0) {
     out.discrepancy_median = std::exp(summaries[posterior.discrepancy_index()].median);
     out.discrepancy_interval = exp_interval(summaries[posterior.discrepancy_index()].interval);
+  }
+  if (posterior.plasma_viscosity_index() >= 0) {
+    out.plasma_viscosity_median = std::exp(summaries[posterior.plasma_viscosity_index()].median);
+    out.plasma_viscosity_interval = exp_interval(summaries[posterior.plasma_viscosity_index()].interval);
+  } else {
+    out.plasma_viscosity_median = sample.plasma.eta0;
+    out.plasma_viscosity_interval = {sample.plasma.eta0, sample.plasma.eta0, options.sampler.interval_level};
   }
   return out;
 }

@@ -23,7 +23,8 @@ struct McmcCalibration {
   DirectFitResult start_fit;                   // MAP-like start (weighted least squares)
   std::vector<RelativeViscosityPoint> points;  // the points in the likelihood
   PosteriorOptions posterior;                  // as used
-  double plasma_viscosity = 0.0;               // eta0 [Pa s]
+  double plasma_viscosity = 0.0;                 // eta0's plateau estimate [Pa s]
+  double plasma_viscosity_standard_error = 0.0;  // and its standard error [Pa s]
   McmcResult mcmc;
   double shear_modulus_median = 0.0;  // [N/m]
   Interval shear_modulus_interval;    // central credible interval of G_s [N/m]
@@ -31,6 +32,8 @@ struct McmcCalibration {
   Interval lambda_interval;
   double discrepancy_median = 0.0;  // sigma_d (0 without it)
   Interval discrepancy_interval;
+  double plasma_viscosity_median = 0.0;  // eta0 [Pa s] (the plateau estimate when fixed)
+  Interval plasma_viscosity_interval;
   std::vector<double> shear_modulus_draws() const;  // exp(ln G_s) of every post-burn-in draw [N/m]
 };
 

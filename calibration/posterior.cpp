@@ -8,8 +8,12 @@
 namespace rbcal::calibration {
 
 LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma_viscosity,
-                           std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options)
-    : observation_{&model, plasma_viscosity, options.cell_radius}, points_(std::move(points)), options_(options) {
+                           std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options,
+                           double plasma_viscosity_standard_error)
+    : observation_{&model, plasma_viscosity, options.cell_radius},
+      points_(std::move(points)),
+      options_(options),
+      plasma_viscosity_standard_error_(plasma_viscosity_standard_error) {
   if (points_.empty()) throw std::invalid_argument("posterior needs at least one data point");
   if (!(options_.shear_modulus_min > 0.0 && options_.shear_modulus_max > options_.shear_modulus_min))
     throw std::invalid_argument("posterior: need 0 < shear_modulus_min < shear_modulus_max");
@@ -27,6 +31,18 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
     discrepancy_index_ = static_cast<int>(names_.size());
     names_.push_back("ln_sigma_d");
   }
+  SampleData as_sample;
+  as_sample.plasma.eta0 = plasma_viscosity;
+  as_sample.plasma.standard_error = plasma_viscosity_standard_error;
+  as_sample.points = points_;
+  if (options_.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(as_sample)) {
+    plasma_viscosity_index_ = static_cast<int>(names_.size());
+    names_.push_back("ln_eta0");
+  }
+}
+
+double LogPosterior::plasma_viscosity(const Eigen::VectorXd& theta) const {
+  return plasma_viscosity_index_ >= 0 ? std::exp(theta(plasma_viscosity_index_)) : observation_.plasma_viscosity;
 }
 
 double LogPosterior::lambda(const Eigen::VectorXd& theta) const {
@@ -54,6 +70,12 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
     if (!std::isfinite(z)) return minus_infinity;
     log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
   }
+  if (plasma_viscosity_index_ >= 0) {
+    const double s = plasma_viscosity_standard_error_ / observation_.plasma_viscosity;
+    const double z = (theta(plasma_viscosity_index_) - std::log(observation_.plasma_viscosity)) / s;
+    if (!std::isfinite(z)) return minus_infinity;
+    log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
+  }
   return log_p;
 }
 
@@ -61,13 +83,16 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
   const double shear_modulus = std::exp(theta(0));
   const double lambda_value = lambda(theta);
   const double sigma_d = discrepancy(theta);
+  ViscosityObservation at = observation_;
+  at.plasma_viscosity = plasma_viscosity(theta);
   double sum = 0.0;
   for (const auto& point : points_) {
-    if (options_.reject_outside_model_range && !observation_.inside_range(point, shear_modulus, lambda_value))
+    if (options_.reject_outside_model_range && !at.inside_range(point, shear_modulus, lambda_value))
       return -std::numeric_limits<double>::infinity();
-    const auto p = observation_.predict(point, shear_modulus, lambda_value);
-    const double variance = point.eta_re_sd * point.eta_re_sd + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
-    const double r = point.eta_re - p.eta_re;
+    const auto p = at.predict(point, shear_modulus, lambda_value);
+    const auto measured = observed_relative_viscosity(point, plasma_viscosity_index_ >= 0, at.plasma_viscosity);
+    const double variance = measured.sd * measured.sd + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
+    const double r = measured.eta_re - p.eta_re;
     sum += r * r / variance + std::log(2.0 * std::numbers::pi * variance);
   }
   const double result = -0.5 * sum;

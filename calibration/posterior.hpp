@@ -1,15 +1,18 @@
 #pragma once
-// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d]) for one sample.
+// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0]) for one sample.
 //
 // Likelihood (independent Gaussian errors on eta_re):
 //   eta_re_i ~ N(m_i, v_i),  m_i = model eta_re(phi_i, Ca_i(G_s), lambda),
 //   v_i = eta_re_sd_i^2 + model sd_i^2 + (sigma_d * m_i)^2,
 // where sigma_d is a relative model-discrepancy scale (what neither the measurement error nor
-// the model's own uncertainty explains).
+// the model's own uncertainty explains). With eta0 a parameter, eta_re_i = eta_i / eta0 with
+// sd se(eta_i) / eta0 and Ca_i uses that eta0: eta0's error, common to every point, is then
+// carried by its prior instead of being folded into each point as if independent.
 // Priors (independent):
 //   ln G_s     ~ uniform on [ln G_s_min, ln G_s_max]  (scale-invariant over the stated range)
 //   ln lambda  ~ uniform on [ln lambda_min, ln lambda_max], by default the model's lambda range
 //   ln sigma_d ~ normal(ln discrepancy_prior_median, discrepancy_prior_log_sd)  (weakly informative)
+//   ln eta0    ~ normal(ln eta0_hat, se(eta0_hat) / eta0_hat)  (the plasma plateau's estimate)
 #include <string>
 #include <vector>
 
@@ -36,20 +39,26 @@ struct PosteriorOptions {
   // (the posterior is truncated to where the model was built); false: the model is trusted to
   // widen its own predictive sd outside its range.
   bool reject_outside_model_range = false;
+  // Add ln eta0 when possible: eta0's standard error > 0 and every point has its viscosity.
+  bool plasma_viscosity_as_parameter = true;
 };
 
 class LogPosterior {
  public:
+  // plasma_viscosity: the plateau estimate eta0_hat [Pa s], with its standard error.
   LogPosterior(const surrogate::ViscosityModel& model, double plasma_viscosity,
-               std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options = {});
+               std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options = {},
+               double plasma_viscosity_standard_error = 0.0);
 
   int dimension() const { return static_cast<int>(names_.size()); }
   const std::vector<std::string>& parameter_names() const { return names_; }
   int lambda_index() const { return lambda_index_; }            // -1 when lambda is fixed
   int discrepancy_index() const { return discrepancy_index_; }  // -1 without sigma_d
+  int plasma_viscosity_index() const { return plasma_viscosity_index_; }  // -1 with eta0 fixed
 
   double lambda(const Eigen::VectorXd& theta) const;
   double discrepancy(const Eigen::VectorXd& theta) const;  // sigma_d (0 without it)
+  double plasma_viscosity(const Eigen::VectorXd& theta) const;  // eta0 [Pa s]
 
   double log_prior(const Eigen::VectorXd& theta) const;       // -inf outside the support
   double log_likelihood(const Eigen::VectorXd& theta) const;  // Gaussian, normalising constants kept
@@ -66,6 +75,8 @@ class LogPosterior {
   std::vector<std::string> names_;
   int lambda_index_ = -1;
   int discrepancy_index_ = -1;
+  int plasma_viscosity_index_ = -1;
+  double plasma_viscosity_standard_error_ = 0.0;
 };
 
 }  // namespace rbcal::calibration

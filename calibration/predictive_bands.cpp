@@ -15,8 +15,8 @@ std::vector<PredictiveBand> predictive_bands(const surrogate::ViscosityModel& mo
                                              const McmcCalibration& calibration,
                                              const PredictiveBandOptions& options) {
   if (calibration.points.empty()) throw std::invalid_argument("predictive bands need calibrated points");
-  const LogPosterior posterior(model, calibration.plasma_viscosity, calibration.points, calibration.posterior);
-  const ViscosityObservation& obs = posterior.observation();
+  const LogPosterior posterior(model, calibration.plasma_viscosity, calibration.points, calibration.posterior,
+                               calibration.plasma_viscosity_standard_error);
 
   std::vector<double> phis = options.phis;
   if (phis.empty()) {
@@ -49,11 +49,13 @@ std::vector<PredictiveBand> predictive_bands(const surrogate::ViscosityModel& mo
       std::vector<double> eta(static_cast<std::size_t>(n_draws));
       for (Eigen::Index k = 0; k < n_draws; ++k) {
         const Eigen::VectorXd theta = all.row(k * all.rows() / n_draws).transpose();
+        ViscosityObservation obs = posterior.observation();
+        obs.plasma_viscosity = posterior.plasma_viscosity(theta);
         const auto p = obs.predict(at, std::exp(theta(0)), posterior.lambda(theta));
         double eta_re = p.eta_re;
         if (options.include_model_error)
           eta_re += std::hypot(p.sd, posterior.discrepancy(theta) * p.eta_re) * normal(rng);
-        eta[static_cast<std::size_t>(k)] = calibration.plasma_viscosity * eta_re;
+        eta[static_cast<std::size_t>(k)] = obs.plasma_viscosity * eta_re;
       }
       band.median.push_back(quantile(eta, 0.5));
       const Interval i = central_interval(eta, options.level);

@@ -2,7 +2,8 @@
 // Posterior-predictive bands of the suspension viscosity eta(gamma_dot) = eta0 * eta_re per phi:
 // median and central interval over posterior draws of (G_s, lambda, sigma_d), optionally with the
 // model's predictive sd and the discrepancy term drawn as noise (the measurement error is not
-// added: the band is for the true curve a new measurement scatters around). eta0 is held fixed.
+// added: the band is for the true curve a new measurement scatters around). eta0 is each draw's
+// when it is a parameter of the posterior, else the plateau estimate.
 #include <cstdint>
 #include <vector>
 

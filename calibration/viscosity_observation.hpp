@@ -9,6 +9,31 @@
 
 namespace rbcal::calibration {
 
+// eta_re of a measured point and its measurement sd.
+struct ObservedRelativeViscosity {
+  double eta_re = 1.0;
+  double sd = 0.0;
+};
+
+// With eta0 fixed at the sample's estimate: the point's eta_re and eta_re_sd (eta0's error folded
+// in). With eta0 a parameter: viscosity / eta0 and viscosity_se / eta0 (eta0's error is then in
+// its prior, common to all points).
+inline ObservedRelativeViscosity observed_relative_viscosity(const RelativeViscosityPoint& point,
+                                                             bool plasma_viscosity_is_parameter,
+                                                             double plasma_viscosity) {
+  if (!plasma_viscosity_is_parameter) return {point.eta_re, point.eta_re_sd};
+  return {point.viscosity / plasma_viscosity, point.viscosity_se / plasma_viscosity};
+}
+
+// Whether eta0 can be a nuisance parameter for this sample: it has a standard error and every
+// point carries its absolute viscosity.
+inline bool plasma_viscosity_can_be_parameter(const SampleData& sample) {
+  if (!(sample.plasma.standard_error > 0.0) || !(sample.plasma.eta0 > 0.0)) return false;
+  for (const auto& p : sample.points)
+    if (!(p.viscosity > 0.0)) return false;
+  return true;
+}
+
 struct ViscosityObservation {
   const surrogate::ViscosityModel* model = nullptr;
   double plasma_viscosity = 0.0;            // eta0 [Pa s]

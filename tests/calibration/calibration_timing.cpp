@@ -19,6 +19,7 @@ int main() {
   test_models::AnalyticViscosityModel model;
   model.c3 = 1.0;
   test_models::SyntheticDesign design;
+  design.plasma_relative_standard_error = 0.021;  // eta0 = 1.569 +- 0.033 mPa s: ln eta0 is a parameter too
   std::mt19937_64 rng(1);
   const SampleData sample = test_models::synthetic_sample(model, design, rng);
   using clock = std::chrono::steady_clock;

@@ -162,3 +162,33 @@ TEST(DirectFit, LaplaceIntervalsCoverWithLambdaFitted) {
   EXPECT_GE(covered_l, 180);
   EXPECT_LE(covered_l, 198);
 }
+
+// eta0's error is common to every point of a sample. As a nuisance parameter with its plateau
+// prior the interval keeps its coverage; folded into each point as if independent it does not
+// (a 2 % error in eta0 moves eta_re by 2 %, which the weak Ca dependence turns into a large G_s shift).
+TEST(DirectFit, PlasmaViscosityErrorReachesTheInterval) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  design.plasma_relative_standard_error = 0.021;
+  DirectFitOptions fixed_options;
+  fixed_options.plasma_viscosity_as_parameter = false;
+  constexpr int kReplications = 200;
+  std::mt19937_64 rng(31337);
+  int covered = 0, covered_fixed = 0;
+  for (int r = 0; r < kReplications; ++r) {
+    const SampleData sample = test_models::synthetic_sample(model, design, rng);
+    const DirectFitResult fit = fit_direct(sample, model);
+    ASSERT_TRUE(fit.plasma_viscosity_fitted);
+    ASSERT_EQ(fit.parameter_names.back(), "ln_eta0");
+    ASSERT_TRUE(fit.covariance_ok);
+    covered += fit.shear_modulus_interval.lower <= design.shear_modulus &&
+               design.shear_modulus <= fit.shear_modulus_interval.upper;
+    const DirectFitResult fixed = fit_direct(sample, model, fixed_options);
+    ASSERT_FALSE(fixed.plasma_viscosity_fitted);
+    covered_fixed += fixed.shear_modulus_interval.lower <= design.shear_modulus &&
+                     design.shear_modulus <= fixed.shear_modulus_interval.upper;
+  }
+  EXPECT_GE(covered, 180);
+  EXPECT_LE(covered, 198);
+  EXPECT_LT(covered_fixed, 170);
+}

@@ -78,3 +78,31 @@ TEST(Posterior, CanBeTruncatedToTheModelsRange) {
   EXPECT_TRUE(std::isfinite(trusting(outside)));
   EXPECT_TRUE(std::isinf(truncated(outside)));
 }
+
+TEST(Posterior, PlasmaViscosityAsNuisanceParameter) {
+  AnalyticViscosityModel model;
+  const double eta0_hat = 1.5e-3, se = 0.03e-3, g_s = 1e-6;
+  auto data = point(0.3, 20.0, 2.4, 0.06);
+  data.viscosity = 3.7e-3;
+  data.viscosity_se = 0.05e-3;
+  const LogPosterior without_se(model, eta0_hat, {data}, {});
+  EXPECT_EQ(without_se.plasma_viscosity_index(), -1);  // no standard error: eta0 stays fixed
+  const LogPosterior posterior(model, eta0_hat, {data}, {}, se);
+  ASSERT_EQ(posterior.plasma_viscosity_index(), 1);
+  EXPECT_EQ(posterior.parameter_names()[1], "ln_eta0");
+
+  const double eta0 = 1.53e-3;
+  const Eigen::Vector2d theta(std::log(g_s), std::log(eta0));
+  EXPECT_DOUBLE_EQ(posterior.plasma_viscosity(theta), eta0);
+  // Likelihood with eta_re = eta / eta0, sd = se(eta) / eta0, and Ca from that eta0.
+  const auto p = model.predict(0.3, capillary_number(eta0, 20.0, kDefaultCellRadius, g_s), 5.0);
+  const double variance = std::pow(0.05e-3 / eta0, 2) + p.sd * p.sd;
+  const double expected = -0.5 * (std::pow(3.7e-3 / eta0 - p.eta_re, 2) / variance +
+                                  std::log(2 * std::numbers::pi * variance));
+  EXPECT_NEAR(posterior.log_likelihood(theta), expected, 1e-12);
+  // Prior: ln eta0 ~ N(ln eta0_hat, se / eta0_hat), on top of the uniform prior of ln G_s.
+  const double s = se / eta0_hat, z = std::log(eta0 / eta0_hat) / s;
+  const double expected_prior =
+      -std::log(std::log(1e-3 / 1e-8)) - 0.5 * z * z - std::log(s) - 0.5 * std::log(2 * std::numbers::pi);
+  EXPECT_NEAR(posterior.log_prior(theta), expected_prior, 1e-12);
+}

@@ -18,6 +18,9 @@ struct SyntheticDesign {
   double lambda = 5.0;
   double relative_measurement_sd = 0.02;  // sd of eta_re / eta_re
   bool add_model_noise = true;            // also draw the model's predictive sd (as the likelihood assumes)
+  // > 0: eta0 is itself measured with this relative standard error (the seed study's 0.033 / 1.569
+  // is 2.1 %); the points then carry absolute viscosities and eta_re = eta / eta0_hat.
+  double plasma_relative_standard_error = 0.0;
 };
 
 inline SampleData synthetic_sample(const surrogate::ViscosityModel& model, const SyntheticDesign& design,
@@ -25,7 +28,10 @@ inline SampleData synthetic_sample(const surrogate::ViscosityModel& model, const
   std::normal_distribution<double> normal;
   SampleData sample;
   sample.name = "synthetic";
-  sample.plasma.eta0 = design.plasma_viscosity;
+  const double rel0 = design.plasma_relative_standard_error;
+  const double eta0_hat = design.plasma_viscosity * (1.0 + rel0 * normal(rng));
+  sample.plasma.eta0 = eta0_hat;
+  sample.plasma.standard_error = rel0 * eta0_hat;
   for (double phi : design.phis)
     for (double rate : design.shear_rates) {
       const double ca = capillary_number(design.plasma_viscosity, rate, kDefaultCellRadius, design.shear_modulus);
@@ -35,6 +41,12 @@ inline SampleData synthetic_sample(const surrogate::ViscosityModel& model, const
       point.shear_rate = rate;
       point.eta_re_sd = design.relative_measurement_sd * p.eta_re;
       point.eta_re = p.eta_re + point.eta_re_sd * normal(rng) + (design.add_model_noise ? p.sd * normal(rng) : 0.0);
+      if (rel0 > 0.0) {
+        point.viscosity = design.plasma_viscosity * point.eta_re;
+        point.viscosity_se = design.plasma_viscosity * point.eta_re_sd;
+        point.eta_re = point.viscosity / eta0_hat;
+        point.eta_re_sd = point.eta_re * std::hypot(design.relative_measurement_sd, rel0);
+      }
       sample.points.push_back(point);
     }
   return sample;
