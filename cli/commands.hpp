@@ -11,5 +11,7 @@ void add_simulate_command(CLI::App& app);
 void add_surrogate_command(CLI::App& app);
 // `show` and `propose` under the `library` sub-command (created in main.cpp).
 void add_library_inspect_commands(CLI::App& library);
+// `generate` under the `library` sub-command.
+void add_library_generate_command(CLI::App& library);
 
 }  // namespace rbcal::cli

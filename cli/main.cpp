@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   rbcal::cli::add_surrogate_command(app);
   CLI::App* library = app.add_subcommand("library", "Simulation libraries: generate, show, propose");
   library->require_subcommand(1);
+  rbcal::cli::add_library_generate_command(*library);
   rbcal::cli::add_library_inspect_commands(*library);
   try {
     app.parse(argc, argv);

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "solver/io/json_file.hpp"
+
 namespace rbcal::solver {
 
 std::string to_string(CellShape s) { return s == CellShape::Sphere ? "sphere" : "biconcave"; }
@@ -159,17 +161,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   return c;
 }
 
-SimulationCase read_case(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open case file " + path);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument(path + ": not valid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
-  }
-  return case_from_json(j, path);
-}
+SimulationCase read_case(const std::string& path) { return case_from_json(read_json_file(path, "case file"), path); }
 
 nlohmann::json case_to_json(const SimulationCase& c) {
   nlohmann::json j;

@@ -1,0 +1,136 @@
+// `rbcal library generate PLAN.json`: runs a sweep plan into a library folder.
+// Parallel on one machine with --jobs (one process per job, each taking the next free
+// case), across a cluster with `mpirun -np K` or a scheduler array (--case-index):
+// workers coordinate only through file locks in the library folder, so any mix of
+// them may run at once, and a killed worker's case resumes from its checkpoint.
+#include <omp.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "solver/sweep/sweep_runner.hpp"
+
+extern char** environ;
+
+namespace rbcal::cli {
+
+namespace {
+
+struct GenerateOptions {
+  std::string plan_path;
+  std::string library_dir;
+  int jobs = 1;
+  int threads = 0;
+  int case_index = -1;
+  bool retry_failed = false;
+  bool quiet = false;
+  std::string worker;  // set for the processes that --jobs starts
+};
+
+// An MPI rank (OpenMPI, MPICH/Hydra, Slurm) names the worker; no MPI calls are needed.
+std::string rank_name() {
+  for (const char* var : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "SLURM_PROCID"})
+    if (const char* v = std::getenv(var)) return std::string("rank ") + v;
+  return "worker";
+}
+
+std::vector<pid_t> children;
+extern "C" void forward_signal(int sig) {
+  for (pid_t c : children) ::kill(c, sig);
+}
+
+// Starts `jobs` copies of this command, each a single worker, and waits for them.
+int run_jobs(const GenerateOptions& o, int argc_threads) {
+  std::vector<std::string> base = {"/proc/self/exe", "library", "generate", o.plan_path, "--library", o.library_dir,
+                                   "--threads", std::to_string(argc_threads)};
+  if (o.retry_failed) base.push_back("--retry-failed");
+  if (o.quiet) base.push_back("--quiet");
+  struct sigaction sa {};
+  sa.sa_handler = forward_signal;
+  ::sigaction(SIGTERM, &sa, nullptr);
+  ::signal(SIGINT, SIG_IGN);  // Ctrl-C reaches the workers directly (same process group)
+  for (int j = 0; j < o.jobs; ++j) {
+    std::vector<std::string> args = base;
+    args.push_back("--worker-name");
+    args.push_back("job " + std::to_string(j + 1) + "/" + std::to_string(o.jobs));
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (::posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), environ) != 0)
+      throw std::runtime_error("cannot start worker process");
+    children.push_back(pid);
+  }
+  int worst = 0;
+  for (pid_t c : children) {
+    int status = 0;
+    ::waitpid(c, &status, 0);
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    worst = std::max(worst, code);
+  }
+  return worst;
+}
+
+void run_generate(const GenerateOptions& o) {
+  const solver::SweepPlan plan = solver::read_sweep_plan(o.plan_path);
+  std::string lib = o.library_dir;
+  if (lib.empty()) lib = std::filesystem::path(o.plan_path).stem().string();
+  if (o.jobs > 1 && o.worker.empty()) {
+    const int cores = omp_get_num_procs();
+    const int threads = o.threads > 0 ? o.threads : std::max(1, cores / o.jobs);
+    GenerateOptions oo = o;
+    oo.library_dir = lib;
+    std::cerr << "rbcal library generate: " << plan.cases.size() << " cases into " << lib << "/ with " << o.jobs
+              << " worker processes of " << threads << " threads\n";
+    const int code = run_jobs(oo, threads);
+    if (code != 0) throw std::runtime_error("a worker process ended with status " + std::to_string(code));
+    return;
+  }
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  solver::SweepOptions so;
+  so.library_dir = lib;
+  so.case_index = o.case_index;
+  so.worker = o.worker.empty() ? rank_name() : o.worker;
+  so.workers = std::max(1, o.jobs);
+  so.retry_failed = o.retry_failed;
+  so.progress = o.quiet ? nullptr : &std::cerr;
+  const solver::SweepSummary s = solver::run_sweep(plan, o.plan_path, so);
+  std::cout << "[" << so.worker << "] " << s.finished << " cases finished now, " << s.already_done
+            << " before; " << s.claimed_elsewhere << " running elsewhere; " << s.failed << " failed (see " << lib
+            << "/failed/)" << (s.interrupted ? "; interrupted, resume by running the same command" : "") << "\n";
+  if (s.interrupted) std::exit(130);
+  if (s.failed > 0) std::exit(3);
+}
+
+}  // namespace
+
+void add_library_generate_command(CLI::App& library) {
+  auto o = std::make_shared<GenerateOptions>();
+  CLI::App* cmd = library.add_subcommand(
+      "generate",
+      "Run a sweep plan (schema rbcal.plan/1) into a library folder; resumable, parallel (--jobs, mpirun, --case-index)");
+  cmd->add_option("plan", o->plan_path, "Plan file: grid of phi, Ca, lambda and a base case (see data/library/)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-l,--library", o->library_dir, "Library folder (default: the plan's file name without .json)");
+  cmd->add_option("-j,--jobs", o->jobs, "Worker processes on this machine, each running one case at a time")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", o->threads, "OpenMP threads per worker (default: cores / jobs)")->check(CLI::Range(1, 4096));
+  cmd->add_option("--case-index", o->case_index,
+                  "Run only this case (0-based, plan order: lambda, then Ca, then phi), e.g. $SLURM_ARRAY_TASK_ID")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--retry-failed", o->retry_failed, "Run again the cases a solver guard stopped (listed in LIB/failed/)");
+  cmd->add_flag("-q,--quiet", o->quiet, "Only the summary line");
+  cmd->add_option("--worker-name", o->worker, "Name in progress lines (set by --jobs for its workers)")->group("");
+  cmd->callback([o] { run_generate(*o); });
+}
+
+}  // namespace rbcal::cli

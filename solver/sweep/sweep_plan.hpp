@@ -1,0 +1,33 @@
+#pragma once
+// A sweep plan: one base case and a grid of (phi, Ca, lambda); each grid point is one
+// library case. File format (schema "rbcal.plan/1"):
+//   {"schema": "rbcal.plan/1", "description": "...",
+//    "grid": {"phi": [...], "Ca": [...], "lambda": [...]},
+//    "base": {cells, numerics, run, params.kb_hat: as in a case file (rbcal.case/1)}}
+// Cases are ordered lambda-major, then Ca, then phi, so the index of a case (for
+// scheduler array jobs) is fixed by the plan.
+#include <string>
+#include <vector>
+
+#include "solver/simulation/simulation_case.hpp"
+
+namespace rbcal::solver {
+
+struct PlannedCase {
+  std::string id;  // file-name-safe, e.g. "phi0.21_Ca0.1_lambda5"
+  SimulationCase spec;
+};
+
+struct SweepPlan {
+  std::string description;
+  std::vector<double> phi, capillary_numbers, viscosity_ratios;
+  std::vector<PlannedCase> cases;
+};
+
+// Parses and checks a plan; errors name the file and the field. Every case is checked
+// as a case file would be.
+SweepPlan read_sweep_plan(const std::string& path);
+
+std::string case_id(double phi, double capillary_number, double viscosity_ratio);
+
+}  // namespace rbcal::solver

@@ -1,0 +1,154 @@
+#include "solver/sweep/sweep_runner.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "solver/simulation/case_runner.hpp"
+#include "solver/sweep/case_claim.hpp"
+
+namespace rbcal::solver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + p.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The library remembers its plan; a different plan on the same folder is refused,
+// since its cases would not belong together.
+void record_plan(const std::string& plan_path, const fs::path& lib) {
+  const nlohmann::json plan = nlohmann::json::parse(slurp(plan_path));
+  const fs::path stored = lib / "plan.json";
+  if (fs::exists(stored)) {
+    nlohmann::json old;
+    try {
+      old = nlohmann::json::parse(slurp(stored));
+    } catch (const nlohmann::json::parse_error&) {
+      throw std::runtime_error(stored.string() + ": not valid JSON; remove it to adopt " + plan_path);
+    }
+    if (old != plan)
+      throw std::runtime_error(plan_path + " differs from the plan of the library " + stored.string() +
+                               "; use another library folder");
+    return;
+  }
+  write_file_atomically(stored.string(), plan.dump(2) + "\n");
+}
+
+bool finished(const fs::path& lib, const std::string& id) { return fs::exists(lib / "cases" / (id + ".json")); }
+
+std::string hms(double s) {
+  std::ostringstream o;
+  const long t = static_cast<long>(s);
+  o << t / 3600 << "h" << std::setw(2) << std::setfill('0') << (t / 60) % 60 << "m" << std::setw(2) << t % 60 << "s";
+  return o.str();
+}
+
+}  // namespace
+
+SweepSummary run_sweep(const SweepPlan& plan, const std::string& plan_path, const SweepOptions& opt) {
+  const fs::path lib(opt.library_dir);
+  for (const char* sub : {"cases", "work", "failed"}) fs::create_directories(lib / sub);
+  record_plan(plan_path, lib);
+
+  std::vector<std::size_t> order;
+  if (opt.case_index >= 0) {
+    if (static_cast<std::size_t>(opt.case_index) >= plan.cases.size())
+      throw std::invalid_argument("case index " + std::to_string(opt.case_index) + " is outside the plan's " +
+                                  std::to_string(plan.cases.size()) + " cases (0-based)");
+    order.push_back(static_cast<std::size_t>(opt.case_index));
+  } else {
+    for (std::size_t i = 0; i < plan.cases.size(); ++i) order.push_back(i);
+  }
+
+  SweepSummary sum;
+  sum.total = static_cast<int>(order.size());
+  for (std::size_t i : order)
+    if (finished(lib, plan.cases[i].id)) ++sum.already_done;
+  if (opt.progress)
+    *opt.progress << "[" << opt.worker << "] " << sum.already_done << " of " << sum.total << " cases already finished in "
+                  << lib.string() << "\n";
+
+  double seconds_spent = 0.0;
+  for (std::size_t i : order) {
+    const PlannedCase& pc = plan.cases[i];
+    if (finished(lib, pc.id)) {
+      // A worker killed right after publishing leaves its work folder and lock behind.
+      const fs::path lock = lib / "work" / (pc.id + ".lock");
+      if (fs::exists(lock) || fs::exists(lib / "work" / pc.id)) {
+        CaseClaim claim(lock.string());
+        if (claim.held()) {
+          fs::remove_all(lib / "work" / pc.id);
+          fs::remove(lock);
+        }
+      }
+      continue;
+    }
+    const fs::path failed = lib / "failed" / (pc.id + ".txt");
+    if (fs::exists(failed) && !opt.retry_failed) {
+      ++sum.failed;
+      continue;
+    }
+    CaseClaim claim((lib / "work" / (pc.id + ".lock")).string());
+    if (!claim.held()) {
+      ++sum.claimed_elsewhere;
+      continue;
+    }
+    if (finished(lib, pc.id)) continue;  // finished between the check and the claim
+    const fs::path work = lib / "work" / pc.id;
+    const bool resuming = fs::exists(work / "checkpoint.bin");
+    if (opt.progress)
+      *opt.progress << "[" << opt.worker << "] case " << i << " " << pc.id << (resuming ? ": resuming" : ": starting")
+                    << std::endl;
+    RunOptions ro;
+    ro.output_dir = work.string();
+    ro.resume = true;
+    ro.progress = opt.progress;
+    ro.progress_seconds = opt.progress_seconds;
+    const auto t0 = std::chrono::steady_clock::now();
+    nlohmann::json result;
+    try {
+      result = run_case(pc.spec, ro);
+    } catch (const std::exception& e) {
+      write_file_atomically(failed.string(), std::string(e.what()) + "\n");
+      ++sum.failed;
+      if (opt.progress) *opt.progress << "[" << opt.worker << "] case " << pc.id << " FAILED: " << e.what() << std::endl;
+      continue;
+    }
+    if (!result.contains("result")) {
+      sum.interrupted = true;
+      if (opt.progress) *opt.progress << "[" << opt.worker << "] stopped; " << pc.id << " resumes from its checkpoint\n";
+      return sum;
+    }
+    // Publish: the series first, the result JSON last (its presence means finished).
+    write_file_atomically((lib / "cases" / (pc.id + ".csv")).string(), slurp(work / "series.csv"));
+    fs::rename(work / "result.json", lib / "cases" / (pc.id + ".json"));
+    fs::remove(failed);
+    fs::remove_all(work);
+    fs::remove(lib / "work" / (pc.id + ".lock"));
+    ++sum.finished;
+    seconds_spent += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (opt.progress) {
+      int left = 0;
+      for (std::size_t k : order) left += finished(lib, plan.cases[k].id) ? 0 : 1;
+      const double eta = seconds_spent / sum.finished * left / std::max(1, opt.workers);
+      const auto& r = result["result"];
+      *opt.progress << "[" << opt.worker << "] finished " << pc.id << ": eta_re = " << r["eta_re"].get<double>() << " +- "
+                    << r["eta_re_sem"].get<double>() << " (" << hms(r["wall_seconds"].get<double>()) << "); " << left
+                    << " cases left, sweep ETA " << hms(eta) << std::endl;
+    }
+  }
+  return sum;
+}
+
+}  // namespace rbcal::solver
