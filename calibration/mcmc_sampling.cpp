@@ -120,6 +120,8 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
     throw std::invalid_argument("MCMC: start point and scale must have one entry per parameter");
   if (options.chains < 1 || options.walkers < 2 || options.max_steps < 8)
     throw std::invalid_argument("MCMC: need chains >= 1, walkers >= 2 and max_steps >= 8");
+  if (!(options.burn_in_fraction >= 0.0 && options.burn_in_fraction <= 0.9))
+    throw std::invalid_argument("MCMC: burn_in_fraction must lie in [0, 0.9]");
 
   std::vector<EnsembleSampler> samplers;
   for (int c = 0; c < options.chains; ++c)
@@ -149,7 +151,7 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
     }
     if (failure) std::rethrow_exception(failure);
     result.steps += batch;
-    result.burn_in_steps = result.steps / 2;
+    result.burn_in_steps = static_cast<int>(options.burn_in_fraction * result.steps);
     std::vector<std::vector<double>> walkers, ensembles;
     for (const auto& s : samplers) {
       auto series = s.chain().walker_series(0, result.burn_in_steps);

@@ -30,6 +30,9 @@ struct McmcOptions {
   int threads = 0;  // OpenMP threads over chains (0: OpenMP's default); the log density must be thread-safe
   double interval_level = 0.95;
   double initial_spread = 3.0;  // walkers start at center + spread * scale * N(0, 1) (over-dispersed)
+  // Fraction of the steps discarded as warm-up at every check (BDA3's default: the first half).
+  // Starting near the MAP a smaller fraction (0.25) saves steps when each prediction is costly.
+  double burn_in_fraction = 0.5;
 };
 
 // Where walkers start: around center with per-parameter scale (e.g. MAP and Laplace sd).
@@ -53,7 +56,7 @@ struct McmcResult {
   std::vector<std::string> parameter_names;
   std::vector<EnsembleChain> chains;  // full history, burn-in included
   int steps = 0;                      // per walker
-  int burn_in_steps = 0;              // the first half, discarded by summaries and draws()
+  int burn_in_steps = 0;              // burn_in_fraction of the steps, discarded by summaries and draws()
   bool converged = false;
   std::string stop_reason;
   double acceptance_fraction = 0.0;
