@@ -9,6 +9,7 @@ void add_bench_command(CLI::App& app);
 void add_stretch_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_surrogate_command(CLI::App& app);
+void add_calibrate_command(CLI::App& app);
 // `show` and `propose` under the `library` sub-command (created in main.cpp).
 void add_library_inspect_commands(CLI::App& library);
 // `generate` under the `library` sub-command.

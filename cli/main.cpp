@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   rbcal::cli::add_stretch_command(app);
   rbcal::cli::add_simulate_command(app);
   rbcal::cli::add_surrogate_command(app);
+  rbcal::cli::add_calibrate_command(app);
   CLI::App* library = app.add_subcommand("library", "Simulation libraries: generate, show, propose");
   library->require_subcommand(1);
   rbcal::cli::add_library_generate_command(*library);

@@ -1,0 +1,214 @@
+#include "calibration/report_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rbcal/build_info.hpp"
+
+namespace rbcal::calibration {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr double kMicro = 1e6;  // N/m -> uN/m
+constexpr double kMilli = 1e3;  // Pa s -> mPa s
+
+json interval_json(const Interval& i, double scale) { return {{"lower", scale * i.lower}, {"upper", scale * i.upper}, {"level", i.level}}; }
+
+json alpha_match_json(const AlphaMatch& m) {
+  json j = {{"shear_rate_per_s", m.shear_rate}, {"matched", m.matched}};
+  if (m.matched) {
+    j["alpha"] = m.alpha;
+    j["capillary_number"] = m.capillary_number;
+    j["G_s_uN_per_m"] = kMicro * m.shear_modulus;
+  } else if (m.capillary_number > 0.0) {
+    j["capillary_number"] = m.capillary_number;
+  }
+  if (!m.message.empty()) j["message"] = m.message;
+  return j;
+}
+
+json alpha_json(const AlphaMethodResult& a) {
+  json j;
+  const ShearModulusSummary& g = a.shear_modulus;
+  j["G_s_uN_per_m"] = g.count > 0 ? json(kMicro * g.mean) : json(nullptr);
+  j["G_s_sd_uN_per_m"] = kMicro * g.sd;
+  j["G_s_standard_error_uN_per_m"] = kMicro * g.standard_error;
+  // Mean +- 1.96 standard errors of the per-shear-rate values: their scatter, not a posterior.
+  j["interval_uN_per_m"] = {{"lower", kMicro * (g.mean - 1.96 * g.standard_error)},
+                            {"upper", kMicro * (g.mean + 1.96 * g.standard_error)},
+                            {"level", 0.95},
+                            {"kind", "mean +- 1.96 standard errors over matched shear rates"}};
+  j["matched_shear_rates"] = g.count;
+  j["G_s_mean_over_ca_uN_per_m"] = a.shear_modulus_per_ca.count > 0 ? json(kMicro * a.shear_modulus_per_ca.mean) : json(nullptr);
+  j["eta0_mPa_s"] = kMilli * a.plasma_viscosity;
+  json per_rate = json::array();
+  for (const ShearRateAlpha& m : a.measured) {
+    json r = {{"shear_rate_per_s", m.shear_rate}, {"alpha", m.fit.alpha}, {"r_squared", m.fit.r_squared},
+              {"points", m.fit.points}};
+    for (const AlphaMatch& match : a.per_shear_rate)
+      if (match.shear_rate == m.shear_rate) r["match"] = alpha_match_json(match);
+    per_rate.push_back(r);
+  }
+  j["alpha_per_shear_rate"] = per_rate;
+  json model = json::array();
+  for (const CapillaryAlpha& m : a.model)
+    model.push_back({{"capillary_number", m.capillary_number}, {"alpha", m.fit.alpha}, {"r_squared", m.fit.r_squared}});
+  j["model_alpha_per_ca"] = model;
+  json per_ca = json::array();
+  for (const AlphaMatch& m : a.per_capillary_number) {
+    json r = alpha_match_json(m);
+    r["capillary_number"] = m.capillary_number;
+    per_ca.push_back(r);
+  }
+  j["G_s_per_ca"] = per_ca;
+  j["messages"] = a.messages;
+  return j;
+}
+
+json direct_json(const DirectFitResult& d) {
+  json j = {{"G_s_uN_per_m", kMicro * d.shear_modulus},
+            {"interval_uN_per_m", interval_json(d.shear_modulus_interval, kMicro)},
+            {"ln_G_s_sd", d.ln_shear_modulus_sd},
+            {"lambda", d.lambda},
+            {"eta0_mPa_s", kMilli * d.plasma_viscosity},
+            {"eta0_fitted", d.plasma_viscosity_fitted},
+            {"chi_square", d.chi_square},
+            {"degrees_of_freedom", d.degrees_of_freedom},
+            {"converged", d.converged},
+            {"covariance_ok", d.covariance_ok},
+            {"at_bound", d.at_bound},
+            {"parameters", d.parameter_names},
+            {"messages", d.messages}};
+  const bool lambda_fitted =
+      std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end();
+  j["lambda_fitted"] = lambda_fitted;
+  if (lambda_fitted) j["lambda_interval"] = interval_json(d.lambda_interval, 1.0);
+  return j;
+}
+
+json mcmc_json(const McmcCalibration& m) {
+  const McmcResult& r = m.mcmc;
+  json j = {{"G_s_uN_per_m", kMicro * m.shear_modulus_median},
+            {"G_s_statistic", "posterior median"},
+            {"interval_uN_per_m", interval_json(m.shear_modulus_interval, kMicro)},
+            {"lambda", m.lambda_median},
+            {"lambda_fitted", m.posterior.fit_lambda},
+            {"eta0_mPa_s", kMilli * m.plasma_viscosity_median},
+            {"eta0_interval_mPa_s", interval_json(m.plasma_viscosity_interval, kMilli)},
+            {"points_in_likelihood", m.points.size()}};
+  if (m.posterior.fit_lambda) j["lambda_interval"] = interval_json(m.lambda_interval, 1.0);
+  if (m.posterior.fit_discrepancy) {
+    j["sigma_d"] = m.discrepancy_median;
+    j["sigma_d_interval"] = interval_json(m.discrepancy_interval, 1.0);
+  }
+  int walkers = r.chains.empty() ? 0 : r.chains.front().walkers();
+  json parameters = json::array();
+  for (const ParameterSummary& p : r.parameters)
+    parameters.push_back({{"name", p.name},
+                          {"mean", p.mean},
+                          {"sd", p.sd},
+                          {"median", p.median},
+                          {"interval", interval_json(p.interval, 1.0)},
+                          {"rhat", p.rhat},
+                          {"classic_rhat", p.classic_rhat},
+                          {"bulk_ess", p.bulk_ess},
+                          {"tail_ess", p.tail_ess},
+                          {"autocorrelation_time", p.autocorrelation_time}});
+  json diagnostics = {{"converged", r.converged},
+                      {"stop_reason", r.stop_reason},
+                      {"steps", r.steps},
+                      {"burn_in_steps", r.burn_in_steps},
+                      {"chains", r.chains.size()},
+                      {"walkers_per_chain", walkers},
+                      {"acceptance_fraction", r.acceptance_fraction},
+                      {"seconds", r.seconds},
+                      {"parameters", parameters}};
+  // The headline numbers are those of ln G_s, the parameter the stopping rule watches.
+  if (!r.parameters.empty()) {
+    diagnostics["rhat"] = r.parameters.front().rhat;
+    diagnostics["ess"] = r.parameters.front().bulk_ess;
+    diagnostics["tail_ess"] = r.parameters.front().tail_ess;
+    diagnostics["tau"] = r.parameters.front().autocorrelation_time;
+  }
+  j["diagnostics"] = diagnostics;
+  return j;
+}
+
+json points_json(const SampleReport& s) {
+  json j = {{"total", s.sample.points.size()}};
+  const DirectFitResult* fit = s.point_fit();
+  if (!fit) return j;
+  int used = 0;
+  json skipped = json::array();
+  for (const FittedPoint& f : fit->points) {
+    if (f.used) {
+      ++used;
+      continue;
+    }
+    skipped.push_back({{"line", f.point.line},
+                       {"phi", f.point.phi},
+                       {"shear_rate_per_s", f.point.shear_rate},
+                       {"capillary_number", f.capillary_number},
+                       {"reason", f.reason}});
+  }
+  j["used"] = used;
+  j["skipped"] = skipped;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json sample_summary(const SampleReport& s) {
+  json j;
+  j["name"] = s.sample.name;
+  const PlasmaViscosity& p = s.sample.plasma;
+  j["plasma"] = {{"eta0_mPa_s", kMilli * p.eta0},
+                 {"eta0_standard_error_mPa_s", kMilli * p.standard_error},
+                 {"plateau_rows", p.plateau_rows}};
+  j["points"] = points_json(s);
+  json methods = json::object();
+  if (s.alpha) methods["alpha"] = alpha_json(*s.alpha);
+  if (s.direct) methods["direct"] = direct_json(*s.direct);
+  if (s.mcmc) methods["mcmc"] = mcmc_json(*s.mcmc);
+  j["methods"] = methods;
+  j["warnings"] = s.warnings;
+  return j;
+}
+
+nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles& files) {
+  json j;
+  j["schema"] = "rbcal.calibration_report/1";
+  j["units"] = {{"G_s", "uN/m"}, {"viscosity", "mPa s"}, {"shear_rate", "1/s"}, {"cell_radius", "um"}};
+  const ReportProvenance& p = report.provenance;
+  j["provenance"] = {{"rbcal_version", build_info::version},
+                     {"git_revision", build_info::git_revision},
+                     {"data_file", p.data_file},
+                     {"surrogate_file", p.surrogate_file},
+                     {"command_line", p.command_line},
+                     {"options", p.options},
+                     {"seed", p.seed}};
+  j["cell_radius_um"] = report.cell_radius * 1e6;
+  json samples = json::array();
+  for (const SampleReport& s : report.samples) samples.push_back(sample_summary(s));
+  j["samples"] = samples;
+  if (report.comparison) {
+    const ShearModulusRatio& r = report.comparison->ratio;
+    j["comparison"] = {{"numerator", report.comparison->numerator},
+                       {"denominator", report.comparison->denominator},
+                       {"ratio_median", r.median},
+                       {"ratio_mean", r.mean},
+                       {"interval", interval_json(r.interval, 1.0)},
+                       {"probability_numerator_greater", r.probability_greater_than_one},
+                       {"pairs", r.draws.size()}};
+  }
+  json listed = json::array();
+  for (const auto& f : files.files) listed.push_back(f.lexically_relative(files.folder).generic_string());
+  listed.push_back("summary.json");
+  j["files"] = listed;
+  j["plots"] = {{"written", files.plots_written}, {"message", files.plots_message}};
+  return j;
+}
+
+}  // namespace rbcal::calibration
