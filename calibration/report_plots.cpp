@@ -232,7 +232,10 @@ void gs_ca_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem
     parts.push_back(num(kMicro * ci.upper) + " with lines lt 2 dt 3 notitle");
   }
   std::string plot;
-  for (std::size_t k = 0; k < parts.size(); ++k) plot += (k ? ", \\\n  " : "") + parts[k];
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (k) plot += ", \\\n  ";  // appended in two steps: GCC 12 misreports `literal + string` (-Wrestrict, PR 105329)
+    plot += parts[k];
+  }
   b.add({stem + "_gs_vs_ca", header(s.sample.name + ": G_s per capillary number (alpha method)") +
                                  "set logscale x\nset xlabel \"Ca = eta0 gamma_dot a / G_s [-]\"\n"
                                  "set ylabel \"G_s [uN/m]\"\nplot " + plot + "\n"});
