@@ -39,6 +39,8 @@ GaussianProcess::GaussianProcess(GaussianProcessData data, GaussianProcessHyperp
     for (Eigen::Index j = 0; j < i; ++j) k(i, j) = k(j, i) = kernel_(data_.inputs.row(i).transpose(), data_.inputs.row(j).transpose());
     k(i, i) = kernel_.signal_variance + total_noise_variance(i);
   }
+  scaled_points_ = data_.inputs.transpose();
+  for (Eigen::Index j = 0; j < d; ++j) scaled_points_.row(j) /= kernel_.length_scales(j);
   k_cholesky_.compute(k);
   if (k_cholesky_.info() != Eigen::Success) throw std::runtime_error("GaussianProcess: covariance matrix not positive definite");
   k_inverse_basis_ = k_cholesky_.solve(data_.basis);
@@ -54,15 +56,29 @@ double GaussianProcess::total_noise_variance(Eigen::Index i) const {
   return data_.noise_variances(i) + std::exp(hyperparameters_.log_nugget_variance) + kGaussianProcessJitterVariance;
 }
 
+namespace {
+
+// Squared scaled distance between the scaled query z and column i of the scaled points.
+double scaled_distance_squared(const Eigen::VectorXd& z, const Eigen::MatrixXd& points, Eigen::Index i) {
+  double r2 = 0.0;
+  for (Eigen::Index j = 0; j < z.size(); ++j) {
+    const double t = z(j) - points(j, i);
+    r2 += t * t;
+  }
+  return r2;
+}
+
+}  // namespace
+
 Eigen::VectorXd GaussianProcess::cross_covariance(const Eigen::VectorXd& x) const {
-  const Eigen::Index n = data_.inputs.rows();
+  const Eigen::Index n = scaled_points_.cols();
+  const Eigen::VectorXd z = x.cwiseQuotient(kernel_.length_scales);
   Eigen::VectorXd k_star(n);
-  for (Eigen::Index i = 0; i < n; ++i) k_star(i) = kernel_(x, data_.inputs.row(i).transpose());
+  for (Eigen::Index i = 0; i < n; ++i) k_star(i) = kernel_.of_scaled_distance(std::sqrt(scaled_distance_squared(z, scaled_points_, i)));
   return k_star;
 }
 
-double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const {
-  const Eigen::VectorXd k_star = cross_covariance(x);
+double GaussianProcess::variance_given(const Eigen::VectorXd& k_star, const Eigen::VectorXd& h_at_x) const {
   const Eigen::VectorXd v = k_cholesky_.matrixL().solve(k_star);
   const Eigen::VectorXd r = h_at_x - k_inverse_basis_.transpose() * k_star;  // R = h* - H^T K^-1 k*
   // eq. 2.42: cov = k** - k*^T K^-1 k* + R^T A^-1 R
@@ -70,16 +86,28 @@ double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::V
   return std::max(variance, 0.0);
 }
 
+double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const {
+  return variance_given(cross_covariance(x), h_at_x);
+}
+
 GaussianProcessPrediction GaussianProcess::predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
                                                    const Eigen::MatrixXd& h_jacobian) const {
-  const Eigen::Index n = data_.inputs.rows();
+  const Eigen::Index n = scaled_points_.cols(), d = x.size();
+  const Eigen::VectorXd z = x.cwiseQuotient(kernel_.length_scales);
+  Eigen::VectorXd k_star(n);
+  // d k / d x_j = -factor(r) (z_j - p_j) / l_j: accumulate sum_i alpha_i (z_j - p_ij) factor_i, scale by -1/l_j.
+  Eigen::VectorXd weighted(d);
+  weighted.setZero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double r = std::sqrt(scaled_distance_squared(z, scaled_points_, i));
+    k_star(i) = kernel_.of_scaled_distance(r);
+    const double w = alpha_(i) * kernel_.derivative_factor(r);
+    for (Eigen::Index j = 0; j < d; ++j) weighted(j) += w * (z(j) - scaled_points_(j, i));
+  }
   GaussianProcessPrediction p;
-  const Eigen::VectorXd k_star = cross_covariance(x);
   p.mean = h_at_x.dot(beta_) + k_star.dot(alpha_);  // eq. 2.41: h*^T beta + k*^T K^-1 (y - H beta)
-  p.variance = latent_variance(x, h_at_x);
-  p.mean_gradient = h_jacobian.transpose() * beta_;
-  for (Eigen::Index i = 0; i < n; ++i)
-    p.mean_gradient += alpha_(i) * kernel_.gradient_in_first(x, data_.inputs.row(i).transpose());
+  p.variance = variance_given(k_star, h_at_x);
+  p.mean_gradient = h_jacobian.transpose() * beta_ - weighted.cwiseQuotient(kernel_.length_scales);
   return p;
 }
 

@@ -84,10 +84,14 @@ class GaussianProcess {
  private:
   Eigen::MatrixXd projection() const;  // P
   Eigen::VectorXd cross_covariance(const Eigen::VectorXd& x) const;
+  double variance_given(const Eigen::VectorXd& k_star, const Eigen::VectorXd& h_at_x) const;
 
   GaussianProcessData data_;
   GaussianProcessHyperparameters hyperparameters_;
   Matern52Kernel kernel_;
+  // Training inputs by column (d x n), scaled by the length scales: each point contiguous,
+  // so predictions loop over them without temporaries (the MCMC calls predict millions of times).
+  Eigen::MatrixXd scaled_points_;
   Eigen::LLT<Eigen::MatrixXd> k_cholesky_;  // K = L L^T
   Eigen::MatrixXd k_inverse_basis_;         // K^-1 H (n x m)
   Eigen::LLT<Eigen::MatrixXd> a_cholesky_;  // A = H^T K^-1 H

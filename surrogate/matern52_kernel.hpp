@@ -25,16 +25,13 @@ struct Matern52Kernel {
   }
 
   double operator()(const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& b) const {
-    const double r = scaled_distance(a, b);
-    const double u = std::sqrt(5.0) * r;
-    return signal_variance * (1.0 + u + u * u / 3.0) * std::exp(-u);
+    return of_scaled_distance(scaled_distance(a, b));
   }
 
-  // d k(a, b) / d a_d = -s2 (5/3)(1 + sqrt5 r) exp(-sqrt5 r) (a_d - b_d) / l_d^2.
-  Eigen::VectorXd gradient_in_first(const Eigen::Ref<const Eigen::VectorXd>& a,
-                                    const Eigen::Ref<const Eigen::VectorXd>& b) const {
-    const Eigen::VectorXd delta = a - b;
-    return -derivative_factor(scaled_distance(a, b)) * delta.cwiseQuotient(length_scales.cwiseAbs2());
+  // k as a function of the scaled distance r.
+  double of_scaled_distance(double r) const {
+    const double u = std::sqrt(5.0) * r;
+    return signal_variance * (1.0 + u + u * u / 3.0) * std::exp(-u);
   }
 
   // d k(a, b) / d ln l_d = s2 (5/3)(1 + sqrt5 r) exp(-sqrt5 r) ((a_d - b_d) / l_d)^2.
