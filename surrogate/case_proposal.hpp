@@ -19,9 +19,17 @@ struct ProposedCase {
   bool inside_hull = true;
 };
 
+// A point of the library by its planned (nominal) parameters.
+struct NominalPoint {
+  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
+};
+
 // The k grid points (of all phi x Ca x lambda combinations of `candidates`) with the
-// largest variance, in the order chosen. Fewer if the grid has fewer points.
+// largest variance, in the order chosen. Fewer if the grid has fewer points. Candidates
+// equal to a point of `simulated` (to 1e-9 relative) are skipped: the surrogate trains on
+// the actual phi of each case, so a planned phi keeps some variance even where it was
+// simulated, and would otherwise be proposed again.
 std::vector<ProposedCase> propose_cases(const ViscositySurrogate& surrogate, const ParameterGrid& candidates,
-                                        std::size_t k);
+                                        std::size_t k, const std::vector<NominalPoint>& simulated = {});
 
 }  // namespace rbcal::surrogate

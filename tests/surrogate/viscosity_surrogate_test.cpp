@@ -199,6 +199,28 @@ TEST(CaseProposal, ProposesTheHoleInTheLibraryFirst) {
       for (double lambda : full.lambda) EXPECT_LE(s.log_viscosity_sd(phi, ca, lambda), proposals[0].relative_sd);
 }
 
+TEST(CaseProposal, NeverProposesAPointAlreadySimulated) {
+  SyntheticGrid grid;
+  grid.phi = {0.1, 0.25, 0.4};
+  grid.ca = {0.01, 0.1, 0.8};
+  const std::vector<TrainingCase> cases = synthetic_training_cases(grid, 4);
+  const ViscositySurrogate s = ViscositySurrogate::fit(cases);
+  // Candidates: the library's own grid; all but one point count as simulated.
+  std::vector<NominalPoint> simulated;
+  for (double phi : grid.phi)
+    for (double ca : grid.ca)
+      for (double lambda : grid.lambda)
+        if (!(phi == 0.25 && ca == 0.1)) simulated.push_back({phi, ca, lambda});
+  const std::vector<ProposedCase> proposals =
+      propose_cases(s, ParameterGrid{grid.phi, grid.ca, grid.lambda}, 5, simulated);
+  const std::size_t free_points = grid.phi.size() * grid.ca.size() * grid.lambda.size() - simulated.size();
+  ASSERT_EQ(proposals.size(), free_points);
+  for (const ProposedCase& p : proposals) {
+    EXPECT_EQ(p.phi, 0.25);
+    EXPECT_EQ(p.capillary_number, 0.1);
+  }
+}
+
 TEST(CaseProposal, EachChoiceIsTheMaximumAfterAddingTheEarlierOnes) {
   SyntheticGrid grid;
   grid.phi = {0.1, 0.25, 0.4};
