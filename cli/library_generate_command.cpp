@@ -48,9 +48,9 @@ extern "C" void forward_signal(int sig) {
 }
 
 // Starts `jobs` copies of this command, each a single worker, and waits for them.
-int run_jobs(const GenerateOptions& o, int argc_threads) {
+int run_jobs(const GenerateOptions& o, int threads) {
   std::vector<std::string> base = {"/proc/self/exe", "library", "generate", o.plan_path, "--library", o.library_dir,
-                                   "--threads", std::to_string(argc_threads)};
+                                   "--threads", std::to_string(threads)};
   if (o.retry_failed) base.push_back("--retry-failed");
   if (o.quiet) base.push_back("--quiet");
   struct sigaction sa {};
@@ -102,7 +102,7 @@ void run_generate(const GenerateOptions& o) {
   so.workers = std::max(1, o.jobs);
   so.retry_failed = o.retry_failed;
   so.progress = o.quiet ? nullptr : &std::cerr;
-  const solver::SweepSummary s = solver::run_sweep(plan, o.plan_path, so);
+  const solver::SweepSummary s = solver::run_sweep(plan, so);
   std::cout << "[" << so.worker << "] " << s.finished << " cases finished now, " << s.already_done
             << " before; " << s.claimed_elsewhere << " running elsewhere; " << s.failed << " failed (see " << lib
             << "/failed/)" << (s.interrupted ? "; interrupted, resume by running the same command" : "") << "\n";

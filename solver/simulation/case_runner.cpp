@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "rbcal/build_info.hpp"
+#include "solver/io/format_duration.hpp"
 #include "solver/io/provenance.hpp"
 #include "solver/io/vtk_writer.hpp"
 #include "solver/simulation/block_average.hpp"
@@ -41,14 +42,6 @@ namespace {
 // Set by SIGINT / SIGTERM: the run stops at the next step with a checkpoint.
 volatile std::sig_atomic_t stop_requested = 0;
 extern "C" void request_stop(int) { stop_requested = 1; }
-
-std::string format_seconds(double s) {
-  std::ostringstream o;
-  if (s >= 3600) o << static_cast<int>(s / 3600) << "h" << std::setw(2) << std::setfill('0') << static_cast<int>(s / 60) % 60 << "m";
-  else if (s >= 60) o << static_cast<int>(s / 60) << "m" << std::setw(2) << std::setfill('0') << static_cast<int>(s) % 60 << "s";
-  else o << std::fixed << std::setprecision(1) << s << "s";
-  return o.str();
-}
 
 void check_state(const Observables& o, std::int64_t step) {
   auto fail = [&](const std::string& what) {
@@ -181,8 +174,8 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
       const double elapsed = std::chrono::duration<double>(now - start).count();
       const double eta = elapsed / static_cast<double>(step - first_step + 1) * (total_steps - step);
       *opt.progress << "  step " << step << "/" << total_steps << "  strain " << std::fixed << std::setprecision(2)
-                    << sim.strain() << "/" << c.strain_end << "  elapsed " << format_seconds(elapsed) << "  ETA "
-                    << format_seconds(eta) << std::endl;
+                    << sim.strain() << "/" << c.strain_end << "  elapsed " << format_duration(elapsed) << "  ETA "
+                    << format_duration(eta) << std::endl;
     }
   }
   series.close();

@@ -50,6 +50,8 @@ SweepPlan read_sweep_plan(const std::string& path) {
   if (j.value("schema", std::string()) != "rbcal.plan/1")
     throw std::invalid_argument(path + ": field schema: must be \"rbcal.plan/1\"");
   SweepPlan plan;
+  plan.source = path;
+  plan.document = j;
   if (j.contains("description")) {
     if (!j["description"].is_string()) throw std::invalid_argument(path + ": field description: must be a string");
     plan.description = j["description"].get<std::string>();

@@ -6,6 +6,7 @@
 //    "base": {cells, numerics, run, params.kb_hat: as in a case file (rbcal.case/1)}}
 // Cases are ordered lambda-major, then Ca, then phi, so the index of a case (for
 // scheduler array jobs) is fixed by the plan.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct PlannedCase {
 };
 
 struct SweepPlan {
+  std::string source;        // the plan file
+  nlohmann::json document;   // its contents, as recorded in the library
   std::string description;
   std::vector<double> phi, capillary_numbers, viscosity_ratios;
   std::vector<PlannedCase> cases;

@@ -3,11 +3,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 
+#include "solver/io/format_duration.hpp"
+#include "solver/io/json_file.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/sweep/case_claim.hpp"
 
@@ -27,39 +28,31 @@ std::string slurp(const fs::path& p) {
 
 // The library remembers its plan; a different plan on the same folder is refused,
 // since its cases would not belong together.
-void record_plan(const std::string& plan_path, const fs::path& lib) {
-  const nlohmann::json plan = nlohmann::json::parse(slurp(plan_path));
+void record_plan(const SweepPlan& plan, const fs::path& lib) {
   const fs::path stored = lib / "plan.json";
   if (fs::exists(stored)) {
     nlohmann::json old;
     try {
-      old = nlohmann::json::parse(slurp(stored));
-    } catch (const nlohmann::json::parse_error&) {
-      throw std::runtime_error(stored.string() + ": not valid JSON; remove it to adopt " + plan_path);
+      old = read_json_file(stored.string(), "library plan");
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(std::string(e.what()) + "; remove it to adopt " + plan.source);
     }
-    if (old != plan)
-      throw std::runtime_error(plan_path + " differs from the plan of the library " + stored.string() +
+    if (old != plan.document)
+      throw std::runtime_error(plan.source + " differs from the plan of the library " + stored.string() +
                                "; use another library folder");
     return;
   }
-  write_file_atomically(stored.string(), plan.dump(2) + "\n");
+  write_file_atomically(stored.string(), plan.document.dump(2) + "\n");
 }
 
 bool finished(const fs::path& lib, const std::string& id) { return fs::exists(lib / "cases" / (id + ".json")); }
 
-std::string hms(double s) {
-  std::ostringstream o;
-  const long t = static_cast<long>(s);
-  o << t / 3600 << "h" << std::setw(2) << std::setfill('0') << (t / 60) % 60 << "m" << std::setw(2) << t % 60 << "s";
-  return o.str();
-}
-
 }  // namespace
 
-SweepSummary run_sweep(const SweepPlan& plan, const std::string& plan_path, const SweepOptions& opt) {
+SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
   const fs::path lib(opt.library_dir);
   for (const char* sub : {"cases", "work", "failed"}) fs::create_directories(lib / sub);
-  record_plan(plan_path, lib);
+  record_plan(plan, lib);
 
   std::vector<std::size_t> order;
   if (opt.case_index >= 0) {
@@ -144,8 +137,8 @@ SweepSummary run_sweep(const SweepPlan& plan, const std::string& plan_path, cons
       const double eta = seconds_spent / sum.finished * left / std::max(1, opt.workers);
       const auto& r = result["result"];
       *opt.progress << "[" << opt.worker << "] finished " << pc.id << ": eta_re = " << r["eta_re"].get<double>() << " +- "
-                    << r["eta_re_sem"].get<double>() << " (" << hms(r["wall_seconds"].get<double>()) << "); " << left
-                    << " cases left, sweep ETA " << hms(eta) << std::endl;
+                    << r["eta_re_sem"].get<double>() << " (" << format_duration(r["wall_seconds"].get<double>()) << "); " << left
+                    << " cases left, sweep ETA " << format_duration(eta) << std::endl;
     }
   }
   return sum;

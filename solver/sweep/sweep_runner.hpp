@@ -37,6 +37,6 @@ struct SweepSummary {
   bool interrupted = false;   // SIGINT / SIGTERM: stopped with a checkpoint
 };
 
-SweepSummary run_sweep(const SweepPlan& plan, const std::string& plan_path, const SweepOptions& options);
+SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options);
 
 }  // namespace rbcal::solver
