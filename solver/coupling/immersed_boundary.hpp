@@ -24,6 +24,9 @@ struct KernelStencil {
 KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
 
 // Adds each node's force (lattice units, force per node) to the lattice force field.
+void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+                   const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
+// The same for one set of nodes.
 void spread_forces(KernelKind kernel, const std::vector<Vec3>& positions, const std::vector<Vec3>& forces,
                    FluidLattice& fluid);
 

@@ -124,14 +124,14 @@ void ShearFlowSimulation::update_velocity_field() {
         for (int k = z0; k <= std::min(z1, z0 + nz - 1); ++k)
           needed_[fluid_.index(((i % nx) + nx) % nx, j, ((k % nz) + nz) % nz)] = 1;
   }
-  const long n = static_cast<long>(nodes);
+  // In blocks of nodes, skipping blocks no kernel reaches.
+  constexpr std::size_t kBlock = 1024;
+  const long blocks = static_cast<long>((nodes + kBlock - 1) / kBlock);
 #pragma omp parallel for schedule(static)
-  for (long node = 0; node < n; ++node) {
-    if (!needed_[node]) continue;
-    const NodeMoments m = fluid_.moments(static_cast<std::size_t>(node));
-    u_field_[3 * node] = m.ux;
-    u_field_[3 * node + 1] = m.uy;
-    u_field_[3 * node + 2] = m.uz;
+  for (long b = 0; b < blocks; ++b) {
+    const std::size_t first = static_cast<std::size_t>(b) * kBlock, count = std::min(kBlock, nodes - first);
+    if (std::find(needed_.begin() + first, needed_.begin() + first + count, 1) == needed_.begin() + first + count) continue;
+    fluid_.velocities(first, count, u_field_.data() + 3 * first);
   }
 }
 
@@ -139,12 +139,24 @@ void ShearFlowSimulation::move_cells() {
   update_velocity_field();
   const KernelKind k = case_.kernel;
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
+  const double* const u_field = u_field_.data();
   auto velocity_at = [&](const Vec3& p) {
     const KernelStencil s = make_stencil(k, p, nx, ny, nz);
-    return interpolate(s, [&](int i, int j, int l) {
-      const std::size_t node = fluid_.index(i, j, l);
-      return Vec3(u_field_[3 * node], u_field_[3 * node + 1], u_field_[3 * node + 2]);
-    });
+    double ux = 0.0, uy = 0.0, uz = 0.0;
+    for (int a = 0; a < s.count; ++a)
+      for (int b = 0; b < s.count; ++b) {
+        const double wab = s.wx[a] * s.wy[b];
+        if (wab == 0.0) continue;
+        const double* row = u_field + 3 * fluid_.index(s.x[a], s.y[b], 0);
+        for (int c = 0; c < s.count; ++c) {
+          const double w = wab * s.wz[c];
+          const double* u = row + 3 * s.z[c];
+          ux += w * u[0];
+          uy += w * u[1];
+          uz += w * u[2];
+        }
+      }
+    return Vec3(ux, uy, uz);
   };
   // All nodes of all cells in one parallel loop: good for one cell and for many.
   std::vector<std::size_t> offset(x_.size() + 1, 0);
@@ -184,7 +196,7 @@ void ShearFlowSimulation::step() {
   compute_membrane_forces();
   lap(timings_.membrane_forces);
   fluid_.clear_force();
-  for (std::size_t i = 0; i < x_.size(); ++i) spread_forces(case_.kernel, x_[i], f_[i], fluid_);
+  spread_forces(case_.kernel, x_, f_, fluid_);
   lap(timings_.spreading);
   update_viscosity();
   lap(timings_.indicator);

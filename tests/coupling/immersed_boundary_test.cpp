@@ -102,3 +102,25 @@ TEST(Interpolation, ReproducesLinearFieldsExactly) {
       EXPECT_LT((interpolate_velocity(k, fluid, x) - (u0 + grad * x)).norm(), 1e-15);
     }
 }
+
+// make_stencil computes the 2- and 4-point weights in closed form from the fractional
+// position; they must equal the kernel evaluated at each node's distance.
+TEST(Stencil, WeightsEqualTheKernelAtEachNode) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> pos(3.0, 12.0);
+  for (KernelKind k : {KernelKind::Linear2, KernelKind::Roma3, KernelKind::Peskin4}) {
+    for (int trial = 0; trial < 500; ++trial) {
+      const Vec3 p(pos(rng), pos(rng), pos(rng));
+      const KernelStencil s = make_stencil(k, p, 16, 16, 16);
+      double sum = 0.0;
+      for (int i = 0; i < s.count; ++i) {
+        EXPECT_NEAR(s.wx[i], kernel_weight(k, p.x() - s.x[i]), 1e-15) << p.transpose();
+        EXPECT_NEAR(s.wy[i], kernel_weight(k, p.y() - s.y[i]), 1e-15) << p.transpose();
+        EXPECT_NEAR(s.wz[i], kernel_weight(k, p.z() - s.z[i]), 1e-15) << p.transpose();
+        sum += s.wx[i];
+      }
+      // The support covers every node the kernel reaches: the weights sum to one.
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+    }
+  }
+}
