@@ -37,17 +37,17 @@ void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positio
   inside_.clear();
   // The scan-line crossings of each mesh are independent (parallel); applying them to
   // alpha is not (neighbouring cells share boundary nodes), so it runs in order.
-  std::vector<Crossings> all(positions.size());
+  crossings_.resize(positions.size());
 #pragma omp parallel for schedule(dynamic)
-  for (std::size_t i = 0; i < positions.size(); ++i) all[i] = crossings_of(*positions[i], triangles);
-  for (const Crossings& c : all) apply(c);
+  for (std::size_t i = 0; i < positions.size(); ++i) crossings_of(*positions[i], triangles, crossings_[i]);
+  for (const Crossings& c : crossings_) apply(c);
   // Changed nodes: the old footprint and the new (a node may appear in both).
   touched_ = std::move(previous);
   touched_.insert(touched_.end(), inside_.begin(), inside_.end());
 }
 
-InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& x,
-                                                      const std::vector<Triangle>& triangles) const {
+void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles,
+                                  Crossings& out) const {
   // Scan lines are numbered on the fine grid: line (p, q) sits at
   // x = (p + 1/2) / S - 1/2 (+ offset), y likewise, and belongs to column floor((p)/S).
   const double h = 1.0 / sub_;
@@ -55,19 +55,23 @@ InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& 
   auto line_y = [&](int q) { return (q + 0.5) * h - 0.5 + kLineOffsetY; };
   // Crossings per scan line, in a flat grid over the mesh's bounding box of lines.
   const Bounds box = bounding_box(x);
-  const double xmin = box.lo.x(), ymin = box.lo.y(), ymax = box.hi.y();
+  const double xmin = box.lo.x(), xmax = box.hi.x(), ymin = box.lo.y(), ymax = box.hi.y();
   auto first_line = [&](double lo, double offset) { return static_cast<int>(std::ceil((lo + 0.5 - offset) * sub_ - 0.5)); };
   auto last_line = [&](double hi, double offset) { return static_cast<int>(std::floor((hi + 0.5 - offset) * sub_ - 0.5)); };
   const int pbase = first_line(xmin, kLineOffsetX), qbase = first_line(ymin, kLineOffsetY);
   const int qcount = std::max(0, last_line(ymax, kLineOffsetY) - qbase + 1);
-  Crossings result{pbase, qbase, qcount, {}};
-  auto& hits = result.hits;
-  hits.reserve(2 * triangles.size());
+  const int pcount = std::max(0, last_line(xmax, kLineOffsetX) - pbase + 1);
+  out.pbase = pbase;
+  out.qbase = qbase;
+  out.qcount = qcount;
+  auto& hits = out.unsorted;
+  hits.clear();
   for (const Triangle& t : triangles) {
     const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
     const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
     if (area2 == 0.0) continue;  // edge-on to the scan lines
     const int sign = area2 > 0.0 ? -1 : 1;  // normal along +z: leaving the interior
+    const double inv_area2 = 1.0 / area2;
     const int p0 = first_line(std::min({a.x(), b.x(), c.x()}), kLineOffsetX);
     const int p1 = last_line(std::max({a.x(), b.x(), c.x()}), kLineOffsetX);
     const int q0 = first_line(std::min({a.y(), b.y(), c.y()}), kLineOffsetY);
@@ -76,16 +80,23 @@ InsideFraction::Crossings InsideFraction::crossings_of(const std::vector<Vec3>& 
       for (int q = q0; q <= q1; ++q) {
         const double px = line_x(p), py = line_y(q);
         // Barycentric weights of (px, py) in the projected triangle.
-        const double wa = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) / area2;
-        const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area2;
+        const double wa = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) * inv_area2;
+        const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) * inv_area2;
         const double wc = 1.0 - wa - wb;
         if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
         hits.push_back({(p - pbase) * qcount + (q - qbase), wa * a.z() + wb * b.z() + wc * c.z(), sign});
       }
   }
-  std::sort(hits.begin(), hits.end(),
-            [](const Hit& u, const Hit& v) { return u.line != v.line ? u.line < v.line : u.z < v.z; });
-  return result;
+  // Order by line (counting sort), then by z within each line (a handful of hits each).
+  auto& start = out.line_start;
+  start.assign(static_cast<std::size_t>(pcount) * qcount + 1, 0);
+  for (const Hit& h : hits) ++start[h.line + 1];
+  for (std::size_t l = 1; l < start.size(); ++l) start[l] += start[l - 1];
+  out.hits.resize(hits.size());
+  for (const Hit& h : hits) out.hits[start[h.line]++] = h;  // start[l] ends as the end of line l
+  for (std::size_t l = 0, begin = 0; l + 1 < start.size(); begin = start[l], ++l)
+    for (std::size_t m = begin + 1; m < static_cast<std::size_t>(start[l]); ++m)
+      for (std::size_t k = m; k > begin && out.hits[k].z < out.hits[k - 1].z; --k) std::swap(out.hits[k], out.hits[k - 1]);
 }
 
 void InsideFraction::apply(const Crossings& c) {

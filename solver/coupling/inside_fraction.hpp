@@ -43,8 +43,10 @@ class InsideFraction {
   struct Crossings {
     int pbase = 0, qbase = 0, qcount = 0;  // first line indices, lines along y
     std::vector<Hit> hits;
+    std::vector<Hit> unsorted;  // scratch, kept between updates with its capacity
+    std::vector<int> line_start;  // scratch for the counting sort by line
   };
-  Crossings crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) const;
+  void crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, Crossings& out) const;
   void apply(const Crossings& c);
 
   int nx_, ny_, nz_;
@@ -53,6 +55,7 @@ class InsideFraction {
   std::vector<std::size_t> inside_;  // nodes with alpha > 0, each once
   std::vector<unsigned char> marked_;  // 1 for the nodes in inside_
   std::vector<std::size_t> touched_;
+  std::vector<Crossings> crossings_;  // per mesh, reused between updates
 };
 
 }  // namespace rbcal::solver

@@ -22,10 +22,13 @@ DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_m
                                  BendingConversion conversion)
     : k_d_(hinge_constant(bending_modulus, conversion)), hinges_(build_hinges(reference)) {
   if (!(bending_modulus >= 0.0)) throw std::invalid_argument("bending: modulus must be >= 0");
-  theta0_.reserve(hinges_.size());
+  cos0_.reserve(hinges_.size());
+  sin0_.reserve(hinges_.size());
   for (const Hinge& h : hinges_) {
     const auto& v = reference.vertices;
-    theta0_.push_back(shape == SpontaneousShape::Reference ? hinge_angle(v[h.a], v[h.b], v[h.c], v[h.d]) : 0.0);
+    const double theta0 = shape == SpontaneousShape::Reference ? hinge_angle(v[h.a], v[h.b], v[h.c], v[h.d]) : 0.0;
+    cos0_.push_back(std::cos(theta0));
+    sin0_.push_back(std::sin(theta0));
   }
 }
 
@@ -39,9 +42,13 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
     const Vec3 n2 = (a - b).cross(d - b);
     const double len = e.norm();
     const double n1sq = n1.squaredNorm(), n2sq = n2.squaredNorm();
-    const double theta = std::atan2(n1.cross(n2).dot(e) / len, n1.dot(n2));
-    const double delta = theta - theta0_[i];
-    energy += k_d_ * (1.0 - std::cos(delta));
+    // cos and sin of theta - theta0 from those of theta and theta0 (no atan2, sin, cos):
+    // |n1 x n2| = |n1||n2| because both normals are perpendicular to the edge.
+    const double sin_t = n1.cross(n2).dot(e) / len, cos_t = n1.dot(n2);
+    const double inv_r = 1.0 / std::sqrt(sin_t * sin_t + cos_t * cos_t);
+    const double cos_delta = (cos_t * cos0_[i] + sin_t * sin0_[i]) * inv_r;
+    const double sin_delta = (sin_t * cos0_[i] - cos_t * sin0_[i]) * inv_r;
+    energy += k_d_ * (1.0 - cos_delta);
 
     // Gradient of the dihedral angle: the wing vertices move along their triangle
     // normals at rate 1/height; the edge vertices take the rest so that the sum and
@@ -51,7 +58,7 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
     const double inv_len2 = 1.0 / (len * len);
     const Vec3 ga = ((c - b).dot(e) * inv_len2) * gc + ((d - b).dot(e) * inv_len2) * gd;
     const Vec3 gb = -((c - a).dot(e) * inv_len2) * gc - ((d - a).dot(e) * inv_len2) * gd;
-    const double dE = k_d_ * std::sin(delta);
+    const double dE = k_d_ * sin_delta;
     forces[h.a] -= dE * ga;
     forces[h.b] -= dE * gb;
     forces[h.c] -= dE * gc;

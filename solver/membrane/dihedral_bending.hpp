@@ -51,7 +51,7 @@ class DihedralBending {
  private:
   double k_d_;
   std::vector<Hinge> hinges_;
-  std::vector<double> theta0_;
+  std::vector<double> cos0_, sin0_;  // of each hinge's spontaneous angle
 };
 
 }  // namespace rbcal::solver
