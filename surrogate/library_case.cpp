@@ -6,11 +6,15 @@
 namespace rbcal::surrogate {
 
 namespace {
-constexpr const char* kNumericsFields[] = {"numerics.N_a",   "numerics.box",    "numerics.tau_out", "numerics.Re",
-                                           "numerics.kernel", "cells.triangles", "cells.shape",      "cells.law",
-                                           "run.window",      "params.kb_hat",   nullptr};
-// params.kb_hat may be absent (the solver's default); the others are required.
-constexpr const char* kOptionalSignatureField = "params.kb_hat";
+// The numerics every case of a library must share. The Reynolds number is not among
+// them: a plan may lower it for its low-Ca cases (a time-step choice at Re << 1).
+constexpr const char* kNumericsFields[] = {"numerics.N_a",   "numerics.box",    "numerics.tau_out", "numerics.kernel",
+                                           "cells.triangles", "cells.shape",     "cells.law",        "cells.profile",
+                                           "cells.skalak_c",  "run.window",      "params.kb_hat",    nullptr};
+// These may be absent (the solver's defaults; older case files); the others are required.
+bool optional_signature_field(const std::string& field) {
+  return field == "params.kb_hat" || field == "cells.profile" || field == "cells.skalak_c";
+}
 }  // namespace
 
 const char* const* library_numerics_fields() { return kNumericsFields; }
@@ -40,7 +44,7 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
     const std::string field = *f;
     const nlohmann::json* node = r.find(field);
     if (!node) {
-      if (field == kOptionalSignatureField) continue;
+      if (optional_signature_field(field)) continue;
       r.fail(field, "missing");
     }
     c.numerics_signature[field] = *node;

@@ -18,8 +18,9 @@ struct SimulationLibrary {
 };
 
 // Reads every LIB/cases/*.json and LIB/plan.json if present. Rejects, naming the files:
-// a case that fails its schema check; cases whose numerics (N_a, box, tau_out, Re,
-// kernel, mesh triangles, cell shape, membrane law, averaging window, kb_hat) differ
+// a case that fails its schema check; cases whose numerics (N_a, box, tau_out, kernel,
+// mesh triangles, cell shape and profile, membrane law and Skalak C, averaging window,
+// kb_hat; not Re, which a plan may lower for low Ca) differ
 // from the first case's; two cases with the same (phi, Ca, lambda); no cases at all.
 SimulationLibrary read_library(const std::filesystem::path& root);
 

@@ -64,6 +64,13 @@ SweepPlan read_sweep_plan(const std::string& path) {
   if (base.contains("cells") && base["cells"].contains("placements"))
     throw std::invalid_argument(path + ": field base.cells.placements: a sweep seeds its cells for each phi; remove the placements");
   base["schema"] = "rbcal.case/1";
+  double max_modulus = 0.0;  // 0: every case keeps the base Reynolds number
+  if (j.contains("max_shear_modulus_lattice")) {
+    const auto& g = j["max_shear_modulus_lattice"];
+    if (!g.is_number() || !(g.get<double>() > 0.0))
+      throw std::invalid_argument(path + ": field max_shear_modulus_lattice: must be a positive number");
+    max_modulus = g.get<double>();
+  }
   for (double lambda : plan.viscosity_ratios)
     for (double ca : plan.capillary_numbers)
       for (double phi : plan.phi) {
@@ -72,7 +79,16 @@ SweepPlan read_sweep_plan(const std::string& path) {
         c["params"]["Ca"] = ca;
         c["params"]["lambda"] = lambda;
         // Field errors from the case reader are reported as fields of base.
-        plan.cases.push_back({case_id(phi, ca, lambda), case_from_json(c, path + " (base)")});
+        SimulationCase spec = case_from_json(c, path + " (base)");
+        if (max_modulus > 0.0) {
+          const double nu = (spec.resolution.tau_out - 0.5) / 3.0;
+          const double re_cap = max_modulus * spec.resolution.nodes_per_radius * ca / (nu * nu);
+          if (re_cap < spec.flow.reynolds_number) {
+            c["numerics"]["Re"] = re_cap;
+            spec = case_from_json(c, path + " (base)");
+          }
+        }
+        plan.cases.push_back({case_id(phi, ca, lambda), std::move(spec)});
       }
   return plan;
 }

@@ -94,13 +94,14 @@ TEST(LibraryReading, RejectsCasesWithOtherNumericsNamingBothFiles) {
       {"numerics.N_a", [](auto& j) { j["numerics"]["N_a"] = 8; }},
       {"numerics.box", [](auto& j) { j["numerics"]["box"] = {16.0, 10.0, 16.0}; }},
       {"numerics.tau_out", [](auto& j) { j["numerics"]["tau_out"] = 0.8; }},
-      {"numerics.Re", [](auto& j) { j["numerics"]["Re"] = 0.1; }},
       {"numerics.kernel", [](auto& j) { j["numerics"]["kernel"] = "peskin3"; }},
       {"cells.triangles", [](auto& j) { j["cells"]["triangles"] = 1280; }},
       {"cells.shape", [](auto& j) { j["cells"]["shape"] = "sphere"; }},
       {"cells.law", [](auto& j) { j["cells"]["law"] = "neo-hookean"; }},
       {"run.window", [](auto& j) { j["run"]["window"] = {40.0, 100.0}; }},
       {"params.kb_hat", [](auto& j) { j["params"]["kb_hat"] = 0.0; }},
+      {"cells.profile", [](auto& j) { j["cells"]["profile"] = "seed"; }},
+      {"cells.skalak_c", [](auto& j) { j["cells"]["skalak_c"] = 10.0; }},
   };
   for (const auto& [field, change] : table) {
     SCOPED_TRACE(field);
@@ -160,6 +161,17 @@ TEST(LibrarySummary, RejectsPlanWithBadGrid) {
   write_text(root / "cases" / "a.json", case_json(0.1, 0.1, 5.0, 0.1, 1.3, 0.01).dump());
   const std::string message = error_of([&] { read_library(root); });
   EXPECT_NE(message.find("plan.json: field grid.phi"), std::string::npos) << message;
+}
+
+// A plan's shear-modulus cap lowers Re for its low-Ca cases (solver/sweep/sweep_plan.hpp),
+// so cases that differ only in Re belong to one library.
+TEST(LibraryReading, AcceptsCasesThatDifferOnlyInReynoldsNumber) {
+  const auto root = fresh_temp_folder("reynolds");
+  write_text(root / "cases" / "a.json", case_json(0.1, 0.1, 5.0, 0.1, 1.3, 0.01).dump());
+  nlohmann::json other = case_json(0.2, 0.1, 5.0, 0.2, 1.7, 0.01);
+  other["numerics"]["Re"] = 0.05;
+  write_text(root / "cases" / "b.json", other.dump());
+  EXPECT_EQ(read_library(root).cases.size(), 2u);
 }
 
 }  // namespace

@@ -1,0 +1,50 @@
+// Sweep plans: the optional cap on the lattice shear modulus lowers the Reynolds number
+// of the low-Ca cases only, to exactly the cap.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "solver/lattice_units.hpp"
+#include "solver/sweep/sweep_plan.hpp"
+
+using namespace rbcal::solver;
+
+namespace {
+
+std::string write_plan(const std::string& name, const std::string& extra) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << R"({"schema": "rbcal.plan/1", "grid": {"phi": [0.05], "Ca": [0.01, 0.1], "lambda": [1]},
+    "base": {"cells": {"shape": "sphere", "triangles": 80, "law": "neo-hookean"},
+             "numerics": {"N_a": 4, "box": [4.0, 4.0, 4.0], "tau_out": 1.0, "Re": 0.2},
+             "run": {"strain_end": 1.0, "window": [0.5, 1.0]}})"
+                      << extra << "}";
+  return path.string();
+}
+
+}  // namespace
+
+TEST(SweepPlan, ShearModulusCapLowersReynoldsNumberOnlyWhereNeeded) {
+  const SweepPlan plan = read_sweep_plan(write_plan("rbcal_plan_cap.json", R"(, "max_shear_modulus_lattice": 0.05)"));
+  ASSERT_EQ(plan.cases.size(), 2u);
+  // Ca 0.01: G_s,lu at Re 0.2 would be 0.2 (1/6)^2 / (4 x 0.01) = 0.139 > 0.05, so Re
+  // becomes 0.05 x 4 x 0.01 x 36 = 0.072 and G_s,lu equals the cap.
+  const SimulationCase& low = plan.cases[0].spec;
+  EXPECT_NEAR(low.flow.reynolds_number, 0.072, 1e-12);
+  EXPECT_NEAR(derive_lattice_units(low.flow, low.resolution).shear_modulus, 0.05, 1e-12);
+  // Ca 0.1: 0.0139 < 0.05, the base Re stays.
+  EXPECT_EQ(plan.cases[1].spec.flow.reynolds_number, 0.2);
+  // Without a cap every case keeps the base Re.
+  const SweepPlan plain = read_sweep_plan(write_plan("rbcal_plan_nocap.json", ""));
+  EXPECT_EQ(plain.cases[0].spec.flow.reynolds_number, 0.2);
+}
+
+TEST(SweepPlan, RejectsANonPositiveShearModulusCapNamingTheField) {
+  try {
+    read_sweep_plan(write_plan("rbcal_plan_badcap.json", R"(, "max_shear_modulus_lattice": -1)"));
+    FAIL() << "accepted a negative cap";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("max_shear_modulus_lattice"), std::string::npos) << e.what();
+  }
+}
