@@ -124,3 +124,37 @@ TEST(Stencil, WeightsEqualTheKernelAtEachNode) {
     }
   }
 }
+
+// Spreading many cells at once runs slabs of x in parallel; the field must equal a plain
+// node-by-node sum, also for slab counts that are odd (nx = 9, 10: three slabs, the last
+// one narrow) or a single slab (nx = 4), with nodes across the periodic boundary.
+TEST(Spreading, ParallelSlabsEqualASerialSum) {
+  for (int nx : {4, 9, 10, 16}) {
+    FluidConfig cfg;
+    cfg.nx = nx;
+    cfg.ny = 12;
+    cfg.nz = 6;
+    FluidLattice fluid(cfg);
+    std::mt19937_64 rng(static_cast<unsigned>(nx));
+    std::uniform_real_distribution<double> px(-3.0, nx + 3.0), py(2.0, 9.0), pz(-2.0, 8.0), frc(-1.0, 1.0);
+    std::vector<std::vector<Vec3>> x(5), f(5);
+    for (int c = 0; c < 5; ++c)
+      for (int i = 0; i < 40; ++i) {
+        x[c].emplace_back(px(rng), py(rng), pz(rng));
+        f[c].emplace_back(frc(rng), frc(rng), frc(rng));
+      }
+    spread_forces(KernelKind::Peskin4, x, f, fluid);
+    std::vector<double> expected(3 * fluid.node_count(), 0.0);
+    for (int c = 0; c < 5; ++c)
+      for (int i = 0; i < 40; ++i) {
+        const KernelStencil s = make_stencil(KernelKind::Peskin4, x[c][i], cfg.nx, cfg.ny, cfg.nz);
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b)
+            for (int d = 0; d < 4; ++d)
+              for (int k = 0; k < 3; ++k)
+                expected[3 * fluid.index(s.x[a], s.y[b], s.z[d]) + k] += s.wx[a] * s.wy[b] * s.wz[d] * f[c][i][k];
+      }
+    for (std::size_t n = 0; n < fluid.node_count(); ++n)
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(fluid.force(k)[n], expected[3 * n + k], 1e-13) << "nx " << nx << " node " << n;
+  }
+}
