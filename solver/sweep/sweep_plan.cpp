@@ -1,5 +1,7 @@
 #include "solver/sweep/sweep_plan.hpp"
 
+#include <algorithm>
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -82,7 +84,8 @@ SweepPlan read_sweep_plan(const std::string& path) {
         SimulationCase spec = case_from_json(c, path + " (base)");
         if (max_modulus > 0.0) {
           const double nu = (spec.resolution.tau_out - 0.5) / 3.0;
-          const double re_cap = max_modulus * spec.resolution.nodes_per_radius * ca / (nu * nu);
+          const double modulus = max_modulus * std::min(1.0, 0.5 * (1.0 + lambda));
+          const double re_cap = modulus * spec.resolution.nodes_per_radius * ca / (nu * nu);
           if (re_cap < spec.flow.reynolds_number) {
             c["numerics"]["Re"] = re_cap;
             spec = case_from_json(c, path + " (base)");

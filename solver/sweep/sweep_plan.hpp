@@ -7,8 +7,10 @@
 //    "max_shear_modulus_lattice": G (optional)}
 // With max_shear_modulus_lattice, each case's Reynolds number is lowered from the base
 // value where needed so that G_s in lattice units, Re nu^2 / (N_a Ca), stays at or below
-// G: the explicit membrane coupling is unstable for stiff membranes (docs/library.md),
-// and this keeps the time step small only for the low-Ca cases that need it.
+// G min(1, (1 + lambda) / 2): the explicit membrane coupling is unstable for stiff
+// membranes, the more so the less viscous the cell's interior, which damps the membrane
+// together with the plasma (docs/library.md). This keeps the time step small only for
+// the low-Ca cases that need it.
 // Cases are ordered lambda-major, then Ca, then phi, so the index of a case (for
 // scheduler array jobs) is fixed by the plan.
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // Sweep plans: the optional cap on the lattice shear modulus lowers the Reynolds number
-// of the low-Ca cases only, to exactly the cap.
+// of the low-Ca cases only, to exactly the cap (scaled down for lambda < 1).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,7 +15,7 @@ namespace {
 
 std::string write_plan(const std::string& name, const std::string& extra) {
   const auto path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << R"({"schema": "rbcal.plan/1", "grid": {"phi": [0.05], "Ca": [0.01, 0.1], "lambda": [1]},
+  std::ofstream(path) << R"({"schema": "rbcal.plan/1", "grid": {"phi": [0.05], "Ca": [0.01, 0.1], "lambda": [1, 0.1]},
     "base": {"cells": {"shape": "sphere", "triangles": 80, "law": "neo-hookean"},
              "numerics": {"N_a": 4, "box": [4.0, 4.0, 4.0], "tau_out": 1.0, "Re": 0.2},
              "run": {"strain_end": 1.0, "window": [0.5, 1.0]}})"
@@ -27,7 +27,7 @@ std::string write_plan(const std::string& name, const std::string& extra) {
 
 TEST(SweepPlan, ShearModulusCapLowersReynoldsNumberOnlyWhereNeeded) {
   const SweepPlan plan = read_sweep_plan(write_plan("rbcal_plan_cap.json", R"(, "max_shear_modulus_lattice": 0.05)"));
-  ASSERT_EQ(plan.cases.size(), 2u);
+  ASSERT_EQ(plan.cases.size(), 4u);  // lambda 1 (Ca 0.01, 0.1), then lambda 0.1
   // Ca 0.01: G_s,lu at Re 0.2 would be 0.2 (1/6)^2 / (4 x 0.01) = 0.139 > 0.05, so Re
   // becomes 0.05 x 4 x 0.01 x 36 = 0.072 and G_s,lu equals the cap.
   const SimulationCase& low = plan.cases[0].spec;
@@ -35,6 +35,11 @@ TEST(SweepPlan, ShearModulusCapLowersReynoldsNumberOnlyWhereNeeded) {
   EXPECT_NEAR(derive_lattice_units(low.flow, low.resolution).shear_modulus, 0.05, 1e-12);
   // Ca 0.1: 0.0139 < 0.05, the base Re stays.
   EXPECT_EQ(plan.cases[1].spec.flow.reynolds_number, 0.2);
+  // lambda 0.1: the cap is 0.05 (1 + 0.1) / 2 = 0.0275, so Re = 0.0275 x 1.44 = 0.0396.
+  const SimulationCase& thin = plan.cases[2].spec;
+  EXPECT_EQ(thin.flow.viscosity_ratio, 0.1);
+  EXPECT_NEAR(thin.flow.reynolds_number, 0.0396, 1e-12);
+  EXPECT_NEAR(derive_lattice_units(thin.flow, thin.resolution).shear_modulus, 0.0275, 1e-12);
   // Without a cap every case keeps the base Re.
   const SweepPlan plain = read_sweep_plan(write_plan("rbcal_plan_nocap.json", ""));
   EXPECT_EQ(plain.cases[0].spec.flow.reynolds_number, 0.2);
