@@ -85,7 +85,11 @@ void add_library_inspect_commands(CLI::App& library) {
   show->add_option("library", *show_library, "Library folder (with cases/, optionally plan.json)")
       ->required()
       ->check(CLI::ExistingDirectory);
-  show->callback([show_library] { std::cout << surrogate::format_summary(surrogate::summarise(surrogate::read_library(*show_library))); });
+  auto show_values = std::make_shared<bool>(false);
+  show->add_flag("--values", *show_values, "Print each present point's eta_re in the grid tables instead of 'x'");
+  show->callback([show_library, show_values] {
+    std::cout << surrogate::format_summary(surrogate::summarise(surrogate::read_library(*show_library)), *show_values);
+  });
 
   auto o = std::make_shared<ProposeOptions>();
   CLI::App* propose = library.add_subcommand(

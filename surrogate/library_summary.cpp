@@ -71,6 +71,7 @@ LibrarySummary summarise(const SimulationLibrary& library) {
           const LibraryCase& c = library.cases[i];
           if (close(c.phi, phi) && close(c.capillary_number, ca) && close(c.viscosity_ratio, lambda)) {
             p.present = true;
+            p.eta_re = c.eta_re;
             matched[i] = true;
           }
         }
@@ -81,7 +82,7 @@ LibrarySummary summarise(const SimulationLibrary& library) {
   return s;
 }
 
-std::string format_summary(const LibrarySummary& s) {
+std::string format_summary(const LibrarySummary& s, bool values) {
   std::ostringstream o;
   o << "library " << s.root << "\n"
     << "  cases            " << s.case_count << "\n";
@@ -104,13 +105,19 @@ std::string format_summary(const LibrarySummary& s) {
   // One table per lambda: rows phi, columns Ca; 'x' present, '.' missing.
   const std::size_t n_ca = s.grid.capillary_number.size(), n_lambda = s.grid.viscosity_ratio.size();
   for (std::size_t l = 0; l < n_lambda; ++l) {
-    o << "\n  lambda = " << fmt(s.grid.viscosity_ratio[l]) << "   (x present, . missing)\n          ";
+    o << "\n  lambda = " << fmt(s.grid.viscosity_ratio[l])
+      << (values ? "   (eta_re, . missing)\n          " : "   (x present, . missing)\n          ");
     for (double ca : s.grid.capillary_number) o << fmt(ca, " %7.3g");
     o << "   <- Ca\n";
     for (std::size_t p = 0; p < s.grid.phi.size(); ++p) {
       o << "  phi " << fmt(s.grid.phi[p], "%-4.3g");
-      for (std::size_t c = 0; c < n_ca; ++c)
-        o << "       " << (s.grid_points[(p * n_ca + c) * n_lambda + l].present ? 'x' : '.');
+      for (std::size_t c = 0; c < n_ca; ++c) {
+        const GridPoint& g = s.grid_points[(p * n_ca + c) * n_lambda + l];
+        if (values)
+          o << (g.present ? fmt(g.eta_re, " %7.3g") : std::string("       ."));
+        else
+          o << "       " << (g.present ? 'x' : '.');
+      }
       o << "\n";
     }
   }

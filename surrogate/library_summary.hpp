@@ -13,6 +13,7 @@ namespace rbcal::surrogate {
 struct GridPoint {
   double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
   bool present = false;  // a finished case has these nominal parameters
+  double eta_re = 0.0;   // its result, when present
 };
 
 struct LibrarySummary {
@@ -34,7 +35,8 @@ struct LibrarySummary {
 LibrarySummary summarise(const SimulationLibrary& library);
 
 // Human-readable report: totals, ranges, then one block per lambda with a phi x Ca table
-// marking present ('x') and missing ('.') points.
-std::string format_summary(const LibrarySummary& summary);
+// marking present ('x') and missing ('.') points, or with values: each present point's
+// eta_re (to read the trends in phi, Ca and lambda).
+std::string format_summary(const LibrarySummary& summary, bool values = false);
 
 }  // namespace rbcal::surrogate

@@ -153,6 +153,11 @@ TEST(LibrarySummary, MarksPresentAndMissingPlanPoints) {
   EXPECT_DOUBLE_EQ(s.nominal_range.phi_max, 0.3);
   const std::string text = format_summary(s);
   EXPECT_NE(text.find("2 present, 2 missing"), std::string::npos) << text;
+  // With values: the phi 0.1 row shows a's eta_re under Ca 0.1 and '.' under Ca 0.4;
+  // the phi 0.2 row '.' then b's.
+  const std::string with_values = format_summary(s, true);
+  EXPECT_NE(with_values.find("phi 0.1      1.3       .\n"), std::string::npos) << with_values;
+  EXPECT_NE(with_values.find("phi 0.2        .     1.5\n"), std::string::npos) << with_values;
 }
 
 TEST(LibrarySummary, RejectsPlanWithBadGrid) {
