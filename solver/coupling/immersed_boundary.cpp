@@ -14,6 +14,13 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 // weights come in closed form from the fractional position: the four Peskin weights
 // share one square root (substitute r + 1, r, 1 - r, 2 - r into the kernel), which
 // makes this several times cheaper than four kernel evaluations.
+// First lattice node of the support around r: even supports straddle r, the 3-point
+// one is centred on the nearest node.
+int support_start(KernelKind kernel, double r) {
+  const int support = kernel_support(kernel);
+  return support == 3 ? static_cast<int>(std::lround(r)) - 1 : static_cast<int>(std::floor(r)) - (support - 1) / 2;
+}
+
 void weights_1d(KernelKind kernel, double r, int support, int& first, std::array<double, 4>& w) {
   const double f = std::floor(r);
   const double t = r - f;  // in [0, 1)
@@ -35,8 +42,7 @@ void weights_1d(KernelKind kernel, double r, int support, int& first, std::array
     case KernelKind::Roma3:
       break;
   }
-  // The 3-point kernel is centred on the nearest node.
-  first = static_cast<int>(std::lround(r)) - 1;
+  first = support_start(kernel, r);
   for (int i = 0; i < support; ++i) w[i] = kernel_weight(kernel, r - (first + i));
 }
 
@@ -100,29 +106,17 @@ void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& posi
   // count) the last slab, which touches slab 0 across the periodic boundary. Within a
   // slab the nodes keep their order, so the sums do not depend on the thread count.
   const int slabs = (nx + kSlabWidth - 1) / kSlabWidth;
-  const int support = kernel_support(kernel);
-  const int shift = support == 3 ? 0 : (support - 1) / 2;  // first column = floor(x) - shift (lround for 3)
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> members;  // (cell, node)
-  std::vector<int> slab_of;
-  std::size_t total = 0;
-  for (const auto& p : positions) total += p.size();
-  members.reserve(total);
-  slab_of.reserve(total);
+  auto slab_of = [&](const Vec3& x) { return wrap(support_start(kernel, x.x()), nx) / kSlabWidth; };
   std::vector<std::size_t> start(slabs + 1, 0);
-  for (std::size_t c = 0; c < positions.size(); ++c)
-    for (std::size_t n = 0; n < positions[c].size(); ++n) {
-      const double x = positions[c][n].x();
-      const int first = (support == 3 ? static_cast<int>(std::lround(x)) - 1 : static_cast<int>(std::floor(x)) - shift);
-      const int slab = (((first % nx) + nx) % nx) / kSlabWidth;
-      slab_of.push_back(slab);
-      members.emplace_back(static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n));
-      ++start[slab + 1];
-    }
+  for (const auto& cell : positions)
+    for (const Vec3& x : cell) ++start[slab_of(x) + 1];
   for (int s = 0; s < slabs; ++s) start[s + 1] += start[s];
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> ordered(members.size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ordered(start.back());  // (cell, node) by slab
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t g = 0; g < members.size(); ++g) ordered[fill[slab_of[g]]++] = members[g];
+    for (std::size_t c = 0; c < positions.size(); ++c)
+      for (std::size_t n = 0; n < positions[c].size(); ++n)
+        ordered[fill[slab_of(positions[c][n])]++] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
   }
   auto spread_slab = [&](int slab) {
     for (std::size_t g = start[slab]; g < start[slab + 1]; ++g) {

@@ -1,13 +1,13 @@
 #include "solver/sweep/sweep_plan.hpp"
 
 #include <algorithm>
-
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "solver/io/json_file.hpp"
+#include "solver/lattice_units.hpp"
 
 namespace rbcal::solver {
 
@@ -83,9 +83,10 @@ SweepPlan read_sweep_plan(const std::string& path) {
         // Field errors from the case reader are reported as fields of base.
         SimulationCase spec = case_from_json(c, path + " (base)");
         if (max_modulus > 0.0) {
-          const double nu = (spec.resolution.tau_out - 0.5) / 3.0;
+          // G_s in lattice units is proportional to Re at fixed Ca, N_a and tau_out.
           const double modulus = max_modulus * std::min(1.0, 0.5 * (1.0 + lambda));
-          const double re_cap = modulus * spec.resolution.nodes_per_radius * ca / (nu * nu);
+          const double re_cap =
+              spec.flow.reynolds_number * modulus / derive_lattice_units(spec.flow, spec.resolution).shear_modulus;
           if (re_cap < spec.flow.reynolds_number) {
             c["numerics"]["Re"] = re_cap;
             spec = case_from_json(c, path + " (base)");
