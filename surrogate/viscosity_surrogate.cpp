@@ -84,7 +84,15 @@ ViscositySurrogate::ViscositySurrogate(std::vector<TrainingCase> cases, Gaussian
   if (terms_.lambda) mean_terms_.push_back("phi ln lambda");
   lower_ = process_.data().inputs.colwise().minCoeff().transpose();
   upper_ = process_.data().inputs.colwise().maxCoeff().transpose();
-  range_ = {lower_(0), upper_(0), std::exp(lower_(1)), std::exp(upper_(1)), std::exp(lower_(2)), std::exp(upper_(2))};
+  // exp(ln x) may miss x by a few ulps; widen by 1e-12 so the library's own Ca and lambda
+  // values (0.01, 10) compare as inside.
+  const double slack = 1e-12;
+  range_ = {lower_(0),
+            upper_(0),
+            std::exp(lower_(1)) * (1.0 - slack),
+            std::exp(upper_(1)) * (1.0 + slack),
+            std::exp(lower_(2)) * (1.0 - slack),
+            std::exp(upper_(2)) * (1.0 + slack)};
 }
 
 Eigen::VectorXd ViscositySurrogate::input(double phi, double capillary_number, double viscosity_ratio) const {
