@@ -68,4 +68,9 @@ ShearPlaneShape shear_plane_shape(const std::vector<Vec3>& x, const std::vector<
   return s;
 }
 
+Vec3 short_axis(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
+  Eigen::SelfAdjointEigenSolver<Mat3> eig(volume_second_moment(x, triangles));
+  return eig.eigenvectors().col(0);  // eigenvalues ascending
+}
+
 }  // namespace rbcal::solver

@@ -34,6 +34,11 @@ struct ShearPlaneShape {
 
 ShearPlaneShape shear_plane_shape(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 
+// Unit vector along the smallest principal second moment of the enclosed volume: the
+// symmetry axis of a discocyte (sign arbitrary). Its component along the vorticity x tells
+// rolling (|n_x| -> 1, the disc spins in the shear plane) from tumbling (n_x -> 0).
+Vec3 short_axis(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+
 // Second moment of the enclosed volume about the volume centroid, and the centroid.
 Mat3 volume_second_moment(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, Vec3* centroid = nullptr);
 

@@ -88,7 +88,7 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
     window_angle.push_back(angle);
   };
   const std::string header =
-      "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach\n";
+      "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach,axis_vorticity\n";
 
   std::int64_t first_step = 1;
   std::string kept_rows;
@@ -156,8 +156,9 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
       for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
       const double d = o.cells.empty() ? 0.0 : o.cells[0].shape.taylor_deformation;
       const double angle = o.cells.empty() ? 0.0 : o.cells[0].shape.inclination * 180.0 / std::numbers::pi;
+      const double axis = o.cells.empty() ? 0.0 : o.cells[0].axis_vorticity;
       series << o.strain << ',' << o.eta_re_stresslet << ',' << o.eta_re_wall << ',' << d << ',' << angle << ','
-             << vol << ',' << o.max_mach << '\n';
+             << vol << ',' << o.max_mach << ',' << axis << '\n';
       keep_for_window(o.strain, o.eta_re_stresslet, o.eta_re_wall, d, angle);
     }
     if (vtk_every && step % vtk_every == 0) snapshot(step);

@@ -248,6 +248,7 @@ Observables ShearFlowSimulation::observe() const {
     sum += cell_stresslet(x_[i], f_[i], v_[i], tri, eta0, case_.flow.viscosity_ratio);
     CellObservables c;
     c.shape = shear_plane_shape(x_[i], tri);
+    c.axis_vorticity = std::abs(short_axis(x_[i], tri).x());
     c.volume_error = enclosed_volume(x_[i], tri) / v0 - 1.0;
     c.centroid = (vertex_centroid(x_[i]) - box_centre()) / a;
     for (const Vec3& vel : v_[i]) o.max_mach = std::max(o.max_mach, vel.norm() * std::sqrt(3.0));

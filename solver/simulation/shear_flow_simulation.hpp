@@ -22,7 +22,8 @@ namespace rbcal::solver {
 
 struct CellObservables {
   ShearPlaneShape shape;
-  double volume_error = 0.0;  // relative
+  double axis_vorticity = 0.0;  // |x component| of the symmetry axis: 1 rolling, 0 in the shear plane
+  double volume_error = 0.0;    // relative
   Vec3 centroid;              // in a, relative to the box centre
 };
 

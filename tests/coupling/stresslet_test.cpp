@@ -48,3 +48,18 @@ TEST(ShearPlaneShape, EllipsoidDeformationAndInclination) {
   EXPECT_NEAR(shape.taylor_deformation, (1.25 - 0.8) / (1.25 + 0.8), 2e-3);
   EXPECT_NEAR(shape.inclination, t, 1e-3);  // major axis from +z towards +y
 }
+
+TEST(ShortAxis, IsTheSymmetryAxisOfADiscocyteInAnyOrientation) {
+  // The biconcave mesh has its symmetry axis along z. Turned by 40 deg about y it points to
+  // (sin 40, 0, cos 40); its x component is what the series reports as axis_vorticity.
+  const TriangleMesh rbc = make_biconcave_cell(1280, 1.0, BiconcaveProfile::EvansFung);
+  EXPECT_NEAR(std::abs(short_axis(rbc.vertices, rbc.triangles).z()), 1.0, 1e-9);
+  const double t = 40.0 * std::numbers::pi / 180.0;
+  std::vector<Vec3> x;
+  for (const Vec3& p : rbc.vertices)
+    x.emplace_back(std::cos(t) * p.x() + std::sin(t) * p.z(), p.y(), -std::sin(t) * p.x() + std::cos(t) * p.z());
+  const Vec3 n = short_axis(x, rbc.triangles);
+  EXPECT_NEAR(std::abs(n.x()), std::sin(t), 1e-9);
+  EXPECT_NEAR(std::abs(n.z()), std::cos(t), 1e-9);
+  EXPECT_NEAR(n.y(), 0.0, 1e-9);
+}
