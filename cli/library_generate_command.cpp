@@ -9,13 +9,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/whole_line_stream.hpp"
 #include "solver/sweep/sweep_runner.hpp"
 
 extern char** environ;
@@ -35,11 +38,25 @@ struct GenerateOptions {
   std::string worker;  // set for the processes that --jobs starts
 };
 
-// An MPI rank (OpenMPI, MPICH/Hydra, Slurm) names the worker; no MPI calls are needed.
-std::string rank_name() {
-  for (const char* var : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "SLURM_PROCID"})
-    if (const char* v = std::getenv(var)) return std::string("rank ") + v;
-  return "worker";
+// An MPI rank (OpenMPI, MPICH/Hydra, Slurm) names the worker, and the number of ranks
+// scales the sweep's ETA; no MPI calls are needed.
+struct LaunchRank {
+  std::string name = "worker";
+  int ranks = 1;
+};
+
+LaunchRank launch_rank() {
+  static constexpr std::pair<const char*, const char*> kLaunchers[] = {
+      {"OMPI_COMM_WORLD_RANK", "OMPI_COMM_WORLD_SIZE"}, {"PMI_RANK", "PMI_SIZE"}, {"SLURM_PROCID", "SLURM_NTASKS"}};
+  LaunchRank r;
+  for (const auto& [rank, size] : kLaunchers) {
+    if (const char* v = std::getenv(rank)) {
+      r.name = std::string("rank ") + v;
+      if (const char* n = std::getenv(size)) r.ranks = std::max(1, std::atoi(n));
+      break;
+    }
+  }
+  return r;
 }
 
 std::vector<pid_t> children;
@@ -98,10 +115,12 @@ void run_generate(const GenerateOptions& o) {
   solver::SweepOptions so;
   so.library_dir = lib;
   so.case_index = o.case_index;
-  so.worker = o.worker.empty() ? rank_name() : o.worker;
-  so.workers = std::max(1, o.jobs);
+  const LaunchRank rank = launch_rank();
+  so.worker = o.worker.empty() ? rank.name : o.worker;
+  so.workers = o.worker.empty() ? rank.ranks : std::max(1, o.jobs);
   so.retry_failed = o.retry_failed;
-  so.progress = o.quiet ? nullptr : &std::cerr;
+  WholeLineStream progress(STDERR_FILENO);
+  so.progress = o.quiet ? nullptr : &progress;
   const solver::SweepSummary s = solver::run_sweep(plan, so);
   std::cout << "[" << so.worker << "] " << s.finished << " cases finished now, " << s.already_done
             << " before; " << s.claimed_elsewhere << " running elsewhere; " << s.failed << " failed (see " << lib

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libceres-dev libboost-math-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   gnuplot-nox
+  openmpi-bin  # only mpirun, for the test of `mpirun -np K rbcal library generate`; rbcal links no MPI
 )
 
 missing=()
