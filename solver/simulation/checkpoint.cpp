@@ -11,7 +11,9 @@ namespace rbcal::solver {
 
 namespace {
 
-constexpr char kMagic[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '1'};
+// Version 2 added the indicator positions (and numerics.indicator_tolerance to the case).
+constexpr char kMagic[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '2'};
+constexpr char kMagicV1[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '1'};
 
 class Writer {
  public:
@@ -83,6 +85,7 @@ void write_checkpoint(const std::string& path, const CheckpointState& s) {
     w.cells(s.positions);
     w.cells(s.velocities);
     w.cells(s.forces);
+    w.cells(s.indicator_positions);
     out.write(kMagic, sizeof kMagic);  // end marker: a complete file
     out.flush();
     if (!out) throw std::runtime_error("error while writing checkpoint " + tmp);
@@ -96,6 +99,8 @@ CheckpointState read_checkpoint(const std::string& path) {
   Reader r(in, path);
   char magic[8];
   in.read(magic, sizeof magic);
+  if (in && std::equal(magic, magic + 8, kMagicV1))
+    r.fail("format 1, written by an older rbcal; remove it to run the case from its start");
   if (!in || !std::equal(magic, magic + 8, kMagic)) r.fail("not an rbcal checkpoint");
   CheckpointState s;
   const std::uint64_t json_size = r.u64();
@@ -107,6 +112,7 @@ CheckpointState read_checkpoint(const std::string& path) {
   s.positions = r.cells();
   s.velocities = r.cells();
   s.forces = r.cells();
+  s.indicator_positions = r.cells();
   in.read(magic, sizeof magic);
   if (!in || !std::equal(magic, magic + 8, kMagic)) r.fail("truncated (no end marker)");
   return s;

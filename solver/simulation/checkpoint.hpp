@@ -1,6 +1,7 @@
 #pragma once
 // Binary checkpoints of a shear-flow simulation: the lattice populations and step count,
-// and every cell's node positions, velocities and membrane forces, all as raw doubles, so
+// and every cell's node positions, velocities, membrane forces and the positions the
+// inside fraction was last built from, all as raw doubles, so
 // that a restarted run continues bit-identically (the viscosity and force fields are
 // functions of the positions and are rebuilt). The case JSON is stored alongside and must
 // match on restart. Files are written atomically (temporary file + rename).
@@ -17,6 +18,9 @@ struct CheckpointState {
   std::int64_t steps = 0;
   std::vector<double> populations;
   std::vector<std::vector<Vec3>> positions, velocities, forces;
+  // Node positions the inside fraction was last built from (numerics.indicator_tolerance);
+  // empty where the viscosity is uniform.
+  std::vector<std::vector<Vec3>> indicator_positions;
 };
 
 void write_checkpoint(const std::string& path, const CheckpointState& state);

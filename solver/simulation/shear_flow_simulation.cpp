@@ -95,8 +95,23 @@ void ShearFlowSimulation::compute_membrane_forces() {
 
 void ShearFlowSimulation::update_viscosity() {
   if (case_.flow.viscosity_ratio == 1.0) return;
+  const double tolerance = case_.indicator_tolerance;
+  if (tolerance > 0.0 && x_indicator_.size() == x_.size()) {
+    double largest = 0.0;  // squared displacement since the last build
+#pragma omp parallel for schedule(static) reduction(max : largest)
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      for (std::size_t m = 0; m < x_[i].size(); ++m)
+        largest = std::max(largest, (x_[i][m] - x_indicator_[i][m]).squaredNorm());
+    if (largest <= tolerance * tolerance) return;
+  }
+  x_indicator_ = x_;
+  rebuild_viscosity();
+}
+
+void ShearFlowSimulation::rebuild_viscosity() {
+  ++timings_.indicator_builds;
   std::vector<const std::vector<Vec3>*> meshes;
-  for (const auto& x : x_) meshes.push_back(&x);
+  for (const auto& x : x_indicator_) meshes.push_back(&x);
   inside_.update(meshes, membrane_->reference().triangles);
   double* nu = fluid_.viscosity();
   const double lambda = case_.flow.viscosity_ratio;
@@ -215,6 +230,7 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   s.positions = x_;
   s.velocities = v_;
   s.forces = f_;
+  s.indicator_positions = x_indicator_;
   write_checkpoint(path, s);
 }
 
@@ -222,16 +238,21 @@ void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   CheckpointState s = read_checkpoint(path);
   if (s.case_json != state_defining_json(case_).dump())
     throw std::runtime_error("checkpoint " + path + " belongs to a different case");
-  if (s.positions.size() != x_.size()) throw std::runtime_error("checkpoint " + path + ": wrong number of cells");
+  // The inside fraction is rebuilt from the positions it was built from before the stop.
+  const bool contrast = case_.flow.viscosity_ratio != 1.0;
+  if (s.positions.size() != x_.size() || (contrast && s.indicator_positions.size() != x_.size()))
+    throw std::runtime_error("checkpoint " + path + ": wrong number of cells");
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (s.positions[i].size() != x_[i].size() || s.velocities[i].size() != x_[i].size() ||
-        s.forces[i].size() != x_[i].size())
+        s.forces[i].size() != x_[i].size() || (contrast && s.indicator_positions[i].size() != x_[i].size()))
       throw std::runtime_error("checkpoint " + path + ": cell " + std::to_string(i) + " has the wrong node count");
   fluid_.restore(s.populations, s.steps);
   x_ = std::move(s.positions);
   v_ = std::move(s.velocities);
   f_ = std::move(s.forces);
-  update_viscosity();
+  if (!contrast) return;
+  x_indicator_ = std::move(s.indicator_positions);
+  rebuild_viscosity();
 }
 
 Observables ShearFlowSimulation::observe() const {

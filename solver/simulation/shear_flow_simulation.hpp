@@ -32,6 +32,7 @@ struct StepTimings {
   double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field
+  std::int64_t indicator_builds = 0;  // steps that rebuilt it (numerics.indicator_tolerance)
   double fluid = 0.0;            // lattice Boltzmann stream + collide
   double interpolation = 0.0;    // velocity field, interpolation, node update, volume correction
   std::int64_t steps = 0;
@@ -69,12 +70,17 @@ class ShearFlowSimulation {
   const std::vector<std::vector<Vec3>>& positions() const { return x_; }
   const std::vector<std::vector<Vec3>>& velocities() const { return v_; }
   const std::vector<std::vector<Vec3>>& membrane_forces() const { return f_; }
+  // Positions the inside fraction was last built from (empty for lambda = 1).
+  const std::vector<std::vector<Vec3>>& indicator_positions() const { return x_indicator_; }
   const std::vector<Triangle>& triangles() const { return membrane_->reference().triangles; }
   Vec3 box_centre() const;
 
  private:
   void compute_membrane_forces();
+  // Rebuilds the inside fraction and viscosity once a node has moved more than
+  // numerics.indicator_tolerance since the last rebuild (always when it is 0).
   void update_viscosity();
+  void rebuild_viscosity();  // from x_indicator_
   // Fluid velocity at the lattice nodes that the cells' kernels can reach this step
   // (one evaluation of the moments per node instead of one per stencil visit).
   void update_velocity_field();
@@ -86,6 +92,7 @@ class ShearFlowSimulation {
   std::unique_ptr<CellMembrane> membrane_;
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
+  std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
   std::vector<double> u_field_;               // 3 per node, valid where needed_ is set
   StepTimings timings_;
   std::vector<unsigned char> needed_;

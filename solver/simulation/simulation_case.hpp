@@ -40,6 +40,10 @@ struct SimulationCase {
   LatticeResolution resolution;
   KernelKind kernel = KernelKind::Peskin4;
   Integrator integrator = Integrator::RK4;
+  // The inside fraction is rebuilt once a membrane node has moved more than this many
+  // lattice spacings since the last rebuild (0: every step). Cells move about 0.01-0.02
+  // spacings per step, while the indicator is itself only accurate to O(dx).
+  double indicator_tolerance = 0.0;
   double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force
   std::uint64_t seed = 1;
   // run

@@ -1,8 +1,10 @@
 // Checkpoint and restart: a run interrupted after N steps and restarted from its
-// checkpoint ends bit-identical to an uninterrupted run; damaged or foreign checkpoints
-// are refused with a message naming the file.
+// checkpoint ends bit-identical to an uninterrupted run, also when the inside fraction
+// is rebuilt only every few steps; damaged or foreign checkpoints are refused with a
+// message naming the file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -24,19 +26,36 @@ SimulationCase tiny_case() {
   return c;
 }
 
+
+double largest_displacement(const std::vector<std::vector<Vec3>>& a, const std::vector<std::vector<Vec3>>& b) {
+  double d = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t m = 0; m < a[i].size(); ++m) d = std::max(d, (a[i][m] - b[i][m]).norm());
+  return d;
+}
+
+// Nodes of the tiny case move up to about 0.008 lattice spacings per step: a tolerance
+// of 0.02 rebuilds the inside fraction every few steps, the lagging state that a
+// checkpoint must carry.
+constexpr double kLaggingTolerance = 0.02;
+
 }  // namespace
 
-TEST(Checkpoint, RestartContinuesBitIdentically) {
+class CheckpointAtIndicatorTolerance : public ::testing::TestWithParam<double> {};
+
+TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
   const std::string path = "checkpoint_test.bin";
-  ShearFlowSimulation straight(tiny_case());
+  SimulationCase c = tiny_case();
+  c.indicator_tolerance = GetParam();
+  ShearFlowSimulation straight(c);
   for (int s = 0; s < 40; ++s) straight.step();
 
   {
-    ShearFlowSimulation first_half(tiny_case());
+    ShearFlowSimulation first_half(c);
     for (int s = 0; s < 20; ++s) first_half.step();
     first_half.save_checkpoint(path);
   }
-  ShearFlowSimulation resumed(tiny_case());
+  ShearFlowSimulation resumed(c);
   resumed.restore_checkpoint(path);
   EXPECT_EQ(resumed.steps_done(), 20);
   for (int s = 0; s < 20; ++s) resumed.step();
@@ -51,7 +70,46 @@ TEST(Checkpoint, RestartContinuesBitIdentically) {
     ASSERT_EQ(straight.velocities()[0][n], resumed.velocities()[0][n]) << "node " << n;
   }
   EXPECT_EQ(straight.observe().eta_re_stresslet, resumed.observe().eta_re_stresslet);
+  const auto& alpha_a = straight.inside_fraction().alpha();
+  const auto& alpha_b = resumed.inside_fraction().alpha();
+  for (std::size_t n = 0; n < alpha_a.size(); ++n) ASSERT_EQ(alpha_a[n], alpha_b[n]) << "inside fraction at node " << n;
   std::filesystem::remove(path);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryStepAndLagging, CheckpointAtIndicatorTolerance,
+                         ::testing::Values(0.0, kLaggingTolerance));
+
+// The inside fraction is rebuilt exactly when a node has moved more than the tolerance
+// since the last build, from the positions at the start of that step.
+TEST(IndicatorTolerance, RebuildsOnceANodeHasMovedFartherThanTheTolerance) {
+  SimulationCase c = tiny_case();
+  c.indicator_tolerance = kLaggingTolerance;
+  ShearFlowSimulation sim(c);
+  int rebuilds = 0;
+  const int steps = 60;
+  for (int s = 0; s < steps; ++s) {
+    const auto before = sim.positions();
+    const auto built_from = sim.indicator_positions();
+    const std::int64_t builds = sim.timings().indicator_builds;
+    sim.step();
+    const double moved = largest_displacement(before, built_from);
+    if (sim.timings().indicator_builds > builds) {
+      ++rebuilds;
+      EXPECT_GT(moved, kLaggingTolerance) << "step " << s;
+      EXPECT_EQ(largest_displacement(sim.indicator_positions(), before), 0.0) << "step " << s;
+    } else {
+      EXPECT_LE(moved, kLaggingTolerance) << "step " << s;
+    }
+  }
+  EXPECT_GT(rebuilds, 3);
+  EXPECT_LT(rebuilds, steps / 2);
+}
+
+TEST(IndicatorTolerance, ZeroRebuildsEveryStep) {
+  ShearFlowSimulation sim(tiny_case());
+  const std::int64_t at_start = sim.timings().indicator_builds;
+  for (int s = 0; s < 10; ++s) sim.step();
+  EXPECT_EQ(sim.timings().indicator_builds - at_start, 10);
 }
 
 TEST(Checkpoint, RefusesDamagedOrForeignFiles) {
