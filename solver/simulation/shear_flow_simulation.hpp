@@ -5,7 +5,8 @@
 // in lattice units (lattice_units.hpp); observables are dimensionless.
 //
 // One step: membrane forces at X^n -> spread to the lattice -> inside fraction and
-// viscosity from X^n -> stream + collide -> node velocities interpolated from the new
+// viscosity from X^n (or kept from an earlier step while no node has moved farther than
+// numerics.indicator_tolerance) -> stream + collide -> node velocities interpolated from the new
 // populations -> X^{n+1} by Euler or by RK4 through the (frozen) interpolated field ->
 // volume correction (volume_constraint.hpp).
 #include <memory>
