@@ -1,0 +1,22 @@
+#include "solver/simulation/state_guards.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rbcal::solver {
+
+void check_state(const Observables& o, std::int64_t step) {
+  auto fail = [&](const std::string& what) {
+    throw std::runtime_error("run stopped at step " + std::to_string(step) + " (strain " + std::to_string(o.strain) +
+                             "): " + what);
+  };
+  if (!std::isfinite(o.eta_re_stresslet)) fail("eta_re from the stresslet is not finite");
+  if (!std::isfinite(o.eta_re_wall)) fail("eta_re from the wall stress is not finite");
+  for (std::size_t i = 0; i < o.cells.size(); ++i)
+    if (!std::isfinite(o.cells[i].volume_error) || std::abs(o.cells[i].volume_error) > 0.5)
+      fail("cell " + std::to_string(i) + ": volume error " + std::to_string(o.cells[i].volume_error));
+  if (!(o.max_mach < 0.3)) fail("membrane-node Mach number " + std::to_string(o.max_mach) + " exceeds 0.3");
+}
+
+}  // namespace rbcal::solver

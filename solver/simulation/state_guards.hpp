@@ -1,0 +1,15 @@
+#pragma once
+// Guards on a running simulation: a non-finite viscosity, a cell whose volume has run
+// away, or a membrane node faster than Mach 0.3 means the explicit coupling has become
+// unstable, and nothing computed after that is worth keeping.
+#include <cstdint>
+
+#include "solver/simulation/shear_flow_simulation.hpp"
+
+namespace rbcal::solver {
+
+// Throws std::runtime_error naming the quantity, the cell (where there is one), the step
+// and the strain when a guard trips.
+void check_state(const Observables& o, std::int64_t step);
+
+}  // namespace rbcal::solver
