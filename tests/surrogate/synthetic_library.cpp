@@ -1,9 +1,12 @@
 #include "synthetic_library.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <unistd.h>
+#include <system_error>
+#include <vector>
 
 namespace rbcal::surrogate::testing {
 
@@ -76,10 +79,30 @@ nlohmann::json case_json(double phi, double ca, double lambda, double phi_actual
   };
 }
 
+namespace {
+
+// The folders fresh_temp_folder made, removed when the test program exits (their names
+// carry the process id, so they would otherwise pile up run after run).
+class TempFolders {
+ public:
+  ~TempFolders() {
+    std::error_code ignored;
+    for (const auto& p : folders_) std::filesystem::remove_all(p, ignored);
+  }
+  void add(const std::filesystem::path& p) { folders_.push_back(p); }
+
+ private:
+  std::vector<std::filesystem::path> folders_;
+};
+
+}  // namespace
+
 std::filesystem::path fresh_temp_folder(const std::string& name) {
+  static TempFolders made;
   const std::filesystem::path p = std::filesystem::temp_directory_path() / ("rbcal_surrogate_tests_" + std::to_string(getpid()) + "_" + name);
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
+  made.add(p);
   return p;
 }
 

@@ -28,7 +28,8 @@ std::vector<TrainingCase> synthetic_training_cases(const SyntheticGrid& grid, un
 // The JSON the solver writes for one finished case (all fields the reader checks).
 nlohmann::json case_json(double phi, double ca, double lambda, double phi_actual, double eta_re, double eta_re_sem);
 
-// A fresh, empty folder under the system temp dir, named after the running test.
+// A fresh, empty folder under the system temp dir, named after the running test; removed
+// when the test program exits.
 std::filesystem::path fresh_temp_folder(const std::string& name);
 
 void write_text(const std::filesystem::path& file, const std::string& text);
