@@ -44,7 +44,7 @@ constexpr double kLaggingTolerance = 0.02;
 class CheckpointAtIndicatorTolerance : public ::testing::TestWithParam<double> {};
 
 TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
-  const std::string path = "checkpoint_test.bin";
+  const std::string path = (std::filesystem::temp_directory_path() / "rbcal_checkpoint_test.bin").string();
   SimulationCase c = tiny_case();
   c.indicator_tolerance = GetParam();
   ShearFlowSimulation straight(c);
@@ -113,7 +113,7 @@ TEST(IndicatorTolerance, ZeroRebuildsEveryStep) {
 }
 
 TEST(Checkpoint, RefusesDamagedOrForeignFiles) {
-  const std::string path = "checkpoint_damaged.bin";
+  const std::string path = (std::filesystem::temp_directory_path() / "rbcal_checkpoint_damaged.bin").string();
   ShearFlowSimulation sim(tiny_case());
   sim.step();
   sim.save_checkpoint(path);
