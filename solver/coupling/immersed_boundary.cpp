@@ -1,7 +1,9 @@
 #include "solver/coupling/immersed_boundary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace rbcal::solver {
@@ -55,9 +57,10 @@ KernelStencil make_stencil(KernelKind kernel, const Vec3& p, int nx, int ny, int
   weights_1d(kernel, p.x(), s.count, fx, s.wx);
   weights_1d(kernel, p.y(), s.count, fy, s.wy);
   weights_1d(kernel, p.z(), s.count, fz, s.wz);
-  // One modulo per direction: the support's later nodes wrap at most once.
-  const int x0 = wrap(fx, nx), z0 = wrap(fz, nz);
-  double wy_sum = 0.0;
+  // One modulo per direction, only where the support starts outside the box; its later
+  // nodes wrap at most once.
+  const int x0 = fx >= 0 && fx < nx ? fx : wrap(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap(fz, nz);
+  bool clipped = false;
   for (int i = 0; i < s.count; ++i) {
     s.x[i] = x0 + i < nx ? x0 + i : wrap(x0 + i, nx);
     s.z[i] = z0 + i < nz ? z0 + i : wrap(z0 + i, nz);
@@ -65,23 +68,81 @@ KernelStencil make_stencil(KernelKind kernel, const Vec3& p, int nx, int ny, int
     if (s.y[i] < 0 || s.y[i] >= ny) {
       s.wy[i] = 0.0;  // beyond a wall
       s.y[i] = 0;
+      clipped = true;
     }
-    wy_sum += s.wy[i];
   }
-  if (wy_sum > 0.0)
-    for (int i = 0; i < s.count; ++i) s.wy[i] /= wy_sum;
+  if (clipped) {
+    double wy_sum = 0.0;
+    for (int i = 0; i < s.count; ++i) wy_sum += s.wy[i];
+    if (wy_sum > 0.0)
+      for (int i = 0; i < s.count; ++i) s.wy[i] /= wy_sum;
+  }
   return s;
 }
 
 namespace {
 
-// Adds one node's force through its stencil.
-void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], const FluidLattice& fluid) {
+// Four consecutive doubles as one vector: the z rows of the 4-point stencil.
+using v4d = double __attribute__((vector_size(4 * sizeof(double))));
+
+v4d load4(const double* p) {
+  v4d v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+void store4(double* p, v4d v) { std::memcpy(p, &v, sizeof v); }
+
+// True where the stencil's z nodes are four consecutive lattice nodes (no seam).
+bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.z[0] + 3; }
+
+// Adds one node's force through its stencil. Away from the z seam, the 4-point stencil
+// adds to each row's two groups of four nodes that start at indices divisible by 4 (its
+// four nodes and neighbours with weight 0): every access then repeats an earlier one
+// exactly or misses it, so no load waits on a partly overlapping store of the previous
+// node (a failed store-to-load forwarding, which cost more than the extra add). The
+// zero-weight neighbours can lie in the adjacent row, which is in the same x-slab or in
+// one that no other thread writes at the same time (spread_forces).
+void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz, std::size_t nodes) {
+  if (contiguous_z4(s)) {
+    const std::size_t last = (static_cast<std::size_t>(s.x[3]) * ny + s.y[3]) * nz + s.z[0];
+    const std::size_t shift = last & 3;  // the same for every row when nz % 4 == 0, else per row
+    if (nz % 4 == 0 && last - shift + 8 <= nodes) {
+      v4d lo[3], hi[3];
+      for (int d = 0; d < 3; ++d) {
+        double lanes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (int c = 0; c < 4; ++c) lanes[shift + c] = s.wz[c] * force[d];
+        lo[d] = load4(lanes);
+        hi[d] = load4(lanes + 4);
+      }
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+          const double wab = s.wx[a] * s.wy[b];
+          if (wab == 0.0) continue;
+          const std::size_t base = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0] - shift;
+          for (int d = 0; d < 3; ++d) {
+            store4(f[d] + base, load4(f[d] + base) + wab * lo[d]);
+            store4(f[d] + base + 4, load4(f[d] + base + 4) + wab * hi[d]);
+          }
+        }
+      return;
+    }
+    const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
+    const v4d fz[3] = {wz * force[0], wz * force[1], wz * force[2]};
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const double wab = s.wx[a] * s.wy[b];
+        if (wab == 0.0) continue;
+        const std::size_t at = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0];
+        for (int d = 0; d < 3; ++d) store4(f[d] + at, load4(f[d] + at) + wab * fz[d]);
+      }
+    return;
+  }
   for (int a = 0; a < s.count; ++a)
     for (int b = 0; b < s.count; ++b) {
       const double wab = s.wx[a] * s.wy[b];
       if (wab == 0.0) continue;
-      const std::size_t row = fluid.index(s.x[a], s.y[b], 0);
+      const std::size_t row = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz;
       for (int c = 0; c < s.count; ++c) {
         const double w = wab * s.wz[c];
         const std::size_t node = row + s.z[c];
@@ -90,38 +151,53 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], c
     }
 }
 
-// Width (in x) of the slabs that spreading colours; at least the widest support less
-// one, so that slabs two apart never write the same lattice node.
-constexpr int kSlabWidth = 4;
-
 }  // namespace
 
-void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+NodeOrder order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz) {
+  // Counting sort by the lattice index (x * ny + y) * nz + z of the stencil's first node;
+  // stable, so the order (and every sum that follows it) does not depend on the thread
+  // count.
+  auto key_of = [&](const Vec3& p) {
+    const int x = wrap(support_start(kernel, p.x()), nx);
+    const int y = std::clamp(support_start(kernel, p.y()), 0, ny - 1);
+    const int z = wrap(support_start(kernel, p.z()), nz);
+    return (static_cast<std::size_t>(x) * ny + y) * nz + z;
+  };
+  const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
+  std::vector<std::uint32_t> start(keys + 1, 0);
+  std::vector<std::uint32_t> key;
+  for (const auto& cell : positions)
+    for (const Vec3& p : cell) {
+      key.push_back(static_cast<std::uint32_t>(key_of(p)));
+      ++start[key.back() + 1];
+    }
+  for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
+  NodeOrder order;
+  const int slabs = (nx + NodeOrder::slab_width - 1) / NodeOrder::slab_width;
+  order.slab_start.resize(slabs + 1);
+  for (int s = 0; s <= slabs; ++s)
+    order.slab_start[s] = start[std::min(keys, static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz)];
+  order.nodes.resize(start.back());
+  std::size_t g = 0;
+  for (std::size_t c = 0; c < positions.size(); ++c)
+    for (std::size_t n = 0; n < positions[c].size(); ++n)
+      order.nodes[start[key[g++]]++] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
+  return order;
+}
+
+void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid) {
   const int nx = fluid.nx(), ny = fluid.ny(), nz = fluid.nz();
   double* const f[3] = {fluid.force(0), fluid.force(1), fluid.force(2)};
-  // Group the nodes by the slab of their stencil's first x column (counting sort). A
-  // node's stencil reaches at most support - 1 columns past its slab, so slabs of one
+  // A node's stencil reaches at most support - 1 columns past its slab, so slabs of one
   // parity can spread concurrently: even slabs, then odd ones, then (for an odd slab
   // count) the last slab, which touches slab 0 across the periodic boundary. Within a
   // slab the nodes keep their order, so the sums do not depend on the thread count.
-  const int slabs = (nx + kSlabWidth - 1) / kSlabWidth;
-  auto slab_of = [&](const Vec3& x) { return wrap(support_start(kernel, x.x()), nx) / kSlabWidth; };
-  std::vector<std::size_t> start(slabs + 1, 0);
-  for (const auto& cell : positions)
-    for (const Vec3& x : cell) ++start[slab_of(x) + 1];
-  for (int s = 0; s < slabs; ++s) start[s + 1] += start[s];
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> ordered(start.back());  // (cell, node) by slab
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t c = 0; c < positions.size(); ++c)
-      for (std::size_t n = 0; n < positions[c].size(); ++n)
-        ordered[fill[slab_of(positions[c][n])]++] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
-  }
+  const int slabs = static_cast<int>(order.slab_start.size()) - 1;
   auto spread_slab = [&](int slab) {
-    for (std::size_t g = start[slab]; g < start[slab + 1]; ++g) {
-      const auto [c, n] = ordered[g];
-      spread_one(make_stencil(kernel, positions[c][n], nx, ny, nz), forces[c][n], f, fluid);
+    for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g) {
+      const auto [c, n] = order.nodes[g];
+      spread_one(make_stencil(kernel, positions[c][n], nx, ny, nz), forces[c][n], f, ny, nz, fluid.node_count());
     }
   };
   const bool odd_count = slabs % 2 == 1;
@@ -133,9 +209,38 @@ void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& posi
   if (odd_count) spread_slab(slabs - 1);
 }
 
+void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+                   const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid) {
+  spread_forces(kernel, order_nodes(kernel, positions, fluid.nx(), fluid.ny(), fluid.nz()), positions, forces, fluid);
+}
+
 void spread_forces(KernelKind kernel, const std::vector<Vec3>& positions, const std::vector<Vec3>& forces,
                    FluidLattice& fluid) {
   spread_forces(kernel, std::vector<std::vector<Vec3>>{positions}, std::vector<std::vector<Vec3>>{forces}, fluid);
+}
+
+Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny, int nz) {
+  if (contiguous_z4(s)) {
+    v4d sum[3] = {};
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const double wab = s.wx[a] * s.wy[b];
+        if (wab == 0.0) continue;
+        const std::size_t at = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0];
+        for (int d = 0; d < 3; ++d) sum[d] += wab * load4(u[d] + at);
+      }
+    const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
+    Vec3 out;
+    for (int d = 0; d < 3; ++d) {
+      const v4d t = sum[d] * wz;
+      out[d] = (t[0] + t[1]) + (t[2] + t[3]);
+    }
+    return out;
+  }
+  return interpolate(s, [&](int i, int j, int k) {
+    const std::size_t n = (static_cast<std::size_t>(i) * ny + j) * nz + k;
+    return Vec3(u[0][n], u[1][n], u[2][n]);
+  });
 }
 
 Vec3 interpolate_velocity(KernelKind kernel, const FluidLattice& fluid, const Vec3& position) {

@@ -6,6 +6,8 @@
 // renormalised along y, so that spreading still conserves force and interpolation still
 // reproduces constants near a wall.
 #include <array>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "solver/coupling/peskin_kernel.hpp"
@@ -23,7 +25,22 @@ struct KernelStencil {
 
 KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
 
+// Membrane nodes (cell, node) sorted by the lattice node where their stencil starts:
+// neighbours in the list touch the same lattice nodes, which keeps the fields in cache
+// (sorting by row only left a third of the speed-up), and the x-slabs that parallel
+// spreading colours are contiguous ranges.
+struct NodeOrder {
+  // Slab width in x: at least the widest support less one, so that slabs two apart never
+  // write the same lattice node.
+  static constexpr int slab_width = 4;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
+  std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
+};
+NodeOrder order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz);
+
 // Adds each node's force (lattice units, force per node) to the lattice force field.
+void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<std::vector<Vec3>>& positions,
+                   const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
 // The same for one set of nodes.
@@ -42,6 +59,11 @@ Vec3 interpolate(const KernelStencil& s, VelocityAt&& u_node) {
     }
   return u;
 }
+
+// Velocity at a point from a nodal velocity field in structure-of-arrays form
+// (u[d][FluidLattice::index(i, j, k)], lattice dimensions ny, nz). The 4-point stencil
+// away from the periodic z seam reads its 16 rows as 4-wide vectors (z is contiguous).
+Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny, int nz);
 
 // Velocity of the lattice fluid at a point (from the populations of the last step).
 Vec3 interpolate_velocity(KernelKind kernel, const FluidLattice& fluid, const Vec3& position);

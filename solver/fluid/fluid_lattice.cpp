@@ -43,7 +43,12 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   for (std::size_t n = 0; n < nodes_; ++n) set_equilibrium(n, 1.0, 0.0, 0.0, 0.0);
 }
 
-void FluidLattice::clear_force() { std::fill(force_.begin(), force_.end(), 0.0); }
+void FluidLattice::clear_force() {
+  const long n = static_cast<long>(force_.size());
+  double* f = force_.data();
+#pragma omp parallel for schedule(static) if (n >= 65536)
+  for (long i = 0; i < n; ++i) f[i] = 0.0;
+}
 
 void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, double uy, double uz) {
   // Stored populations are post-collision, whose momentum exceeds rho u by F/2.
@@ -183,7 +188,7 @@ NodeMoments FluidLattice::moments(std::size_t node) const {
           (jz - 0.5 * force(2)[node]) / rho};
 }
 
-void FluidLattice::velocities(std::size_t first, std::size_t count, double* u) const {
+void FluidLattice::velocities(std::size_t first, std::size_t count, double* const u[3]) const {
   constexpr std::size_t kBlock = 256;
   double rho[kBlock], jx[kBlock], jy[kBlock], jz[kBlock];
   for (std::size_t begin = first; begin < first + count; begin += kBlock) {
@@ -203,11 +208,11 @@ void FluidLattice::velocities(std::size_t first, std::size_t count, double* u) c
       }
     }
     const double *gx = force(0) + begin, *gy = force(1) + begin, *gz = force(2) + begin;
-    double* out = u + 3 * (begin - first);
+    double *ox = u[0] + begin, *oy = u[1] + begin, *oz = u[2] + begin;
     for (std::size_t i = 0; i < n; ++i) {
-      out[3 * i] = (jx[i] - 0.5 * gx[i]) / rho[i];
-      out[3 * i + 1] = (jy[i] - 0.5 * gy[i]) / rho[i];
-      out[3 * i + 2] = (jz[i] - 0.5 * gz[i]) / rho[i];
+      ox[i] = (jx[i] - 0.5 * gx[i]) / rho[i];
+      oy[i] = (jy[i] - 0.5 * gy[i]) / rho[i];
+      oz[i] = (jz[i] - 0.5 * gz[i]) / rho[i];
     }
   }
 }

@@ -121,81 +121,55 @@ void ShearFlowSimulation::rebuild_viscosity() {
 void ShearFlowSimulation::update_velocity_field() {
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
   const std::size_t nodes = fluid_.node_count();
-  if (u_field_.size() != 3 * nodes) {
-    u_field_.assign(3 * nodes, 0.0);
-    needed_.assign(nodes, 0);
-  }
-  std::fill(needed_.begin(), needed_.end(), 0);
-  // Bounding box of each cell, widened by the kernel reach and one step of motion.
+  if (u_field_.size() != 3 * nodes) u_field_.assign(3 * nodes, 0.0);
+  // Lattice rows (x, y; all z) that some cell's kernel can reach: the cells' bounding
+  // boxes in x and y, widened by the kernel reach and one step of motion.
+  needed_rows_.assign(static_cast<std::size_t>(nx) * ny, 0);
   const int reach = kernel_support(case_.kernel) / 2 + 2;
   for (const auto& x : x_) {
     const auto [lo, hi] = bounding_box(x);
     const int x0 = static_cast<int>(std::floor(lo.x())) - reach, x1 = static_cast<int>(std::ceil(hi.x())) + reach;
     const int y0 = std::max(0, static_cast<int>(std::floor(lo.y())) - reach);
     const int y1 = std::min(ny - 1, static_cast<int>(std::ceil(hi.y())) + reach);
-    const int z0 = static_cast<int>(std::floor(lo.z())) - reach, z1 = static_cast<int>(std::ceil(hi.z())) + reach;
+    if (y1 < y0) continue;
     for (int i = x0; i <= std::min(x1, x0 + nx - 1); ++i)
-      for (int j = y0; j <= y1; ++j)
-        for (int k = z0; k <= std::min(z1, z0 + nz - 1); ++k)
-          needed_[fluid_.index(((i % nx) + nx) % nx, j, ((k % nz) + nz) % nz)] = 1;
+      std::fill_n(needed_rows_.begin() + static_cast<std::size_t>(((i % nx) + nx) % nx) * ny + y0, y1 - y0 + 1, 1);
   }
-  // In blocks of nodes, skipping blocks no kernel reaches.
-  constexpr std::size_t kBlock = 1024;
-  const long blocks = static_cast<long>((nodes + kBlock - 1) / kBlock);
+  double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
+  const long rows = static_cast<long>(needed_rows_.size());
 #pragma omp parallel for schedule(static)
-  for (long b = 0; b < blocks; ++b) {
-    const std::size_t first = static_cast<std::size_t>(b) * kBlock, count = std::min(kBlock, nodes - first);
-    if (std::find(needed_.begin() + first, needed_.begin() + first + count, 1) == needed_.begin() + first + count) continue;
-    fluid_.velocities(first, count, u_field_.data() + 3 * first);
-  }
+  for (long r = 0; r < rows; ++r)
+    if (needed_rows_[r]) fluid_.velocities(static_cast<std::size_t>(r) * nz, nz, u);
 }
 
-void ShearFlowSimulation::move_cells() {
+void ShearFlowSimulation::move_cells(double dt) {
   update_velocity_field();
   const KernelKind k = case_.kernel;
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
-  const double* const u_field = u_field_.data();
-  auto velocity_at = [&](const Vec3& p) {
-    const KernelStencil s = make_stencil(k, p, nx, ny, nz);
-    double ux = 0.0, uy = 0.0, uz = 0.0;
-    for (int a = 0; a < s.count; ++a)
-      for (int b = 0; b < s.count; ++b) {
-        const double wab = s.wx[a] * s.wy[b];
-        if (wab == 0.0) continue;
-        const double* row = u_field + 3 * fluid_.index(s.x[a], s.y[b], 0);
-        for (int c = 0; c < s.count; ++c) {
-          const double w = wab * s.wz[c];
-          const double* u = row + 3 * s.z[c];
-          ux += w * u[0];
-          uy += w * u[1];
-          uz += w * u[2];
-        }
-      }
-    return Vec3(ux, uy, uz);
-  };
-  // All nodes of all cells in one parallel loop: good for one cell and for many.
-  std::vector<std::size_t> offset(x_.size() + 1, 0);
-  for (std::size_t i = 0; i < x_.size(); ++i) offset[i + 1] = offset[i] + x_[i].size();
-  const long total = static_cast<long>(offset.back());
+  const std::size_t nodes = fluid_.node_count();
+  const double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
+  auto velocity_at = [&](const Vec3& p) { return interpolate_field(make_stencil(k, p, nx, ny, nz), u, ny, nz); };
+  // All nodes of all cells in one parallel loop, in the order of their stencils' rows
+  // (order_nodes, built from these positions when the forces were spread).
+  const long total = static_cast<long>(order_.nodes.size());
 #pragma omp parallel for schedule(static)
   for (long g = 0; g < total; ++g) {
-    const std::size_t cell = std::upper_bound(offset.begin(), offset.end(), static_cast<std::size_t>(g)) - offset.begin() - 1;
-    const std::size_t m = static_cast<std::size_t>(g) - offset[cell];
+    const auto [cell, m] = order_.nodes[g];
     const Vec3& x = x_[cell][m];
     const Vec3 u1 = velocity_at(x);
     if (case_.integrator == Integrator::Euler) {
       v_[cell][m] = u1;
     } else {
-      // Classical RK4 through the velocity field of this step (dt = 1).
-      const Vec3 u2 = velocity_at(x + 0.5 * u1);
-      const Vec3 u3 = velocity_at(x + 0.5 * u2);
-      const Vec3 u4 = velocity_at(x + u3);
+      // Classical RK4 through the velocity field of this step (over dt).
+      const Vec3 u2 = velocity_at(x + (0.5 * dt) * u1);
+      const Vec3 u3 = velocity_at(x + (0.5 * dt) * u2);
+      const Vec3 u4 = velocity_at(x + dt * u3);
       v_[cell][m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
     }
   }
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += v_[i][m];
+    for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += dt * v_[i][m];
     correct_volume(x_[i], membrane_->reference().triangles, membrane_->reference_volume());
   }
 }
@@ -208,17 +182,25 @@ void ShearFlowSimulation::step() {
     into += std::chrono::duration<double>(now - t).count();
     t = now;
   };
-  compute_membrane_forces();
-  lap(timings_.membrane_forces);
-  fluid_.clear_force();
-  spread_forces(case_.kernel, x_, f_, fluid_);
-  lap(timings_.spreading);
-  update_viscosity();
-  lap(timings_.indicator);
+  // The membrane advances once every coupling_interval fluid steps (numerics.coupling_interval);
+  // in between, the fluid steps under the frozen force and viscosity fields.
+  const int interval = case_.coupling_interval;
+  if (fluid_.steps_done() % interval == 0) {
+    compute_membrane_forces();
+    lap(timings_.membrane_forces);
+    order_ = order_nodes(case_.kernel, x_, units_.nx, units_.ny, units_.nz);
+    fluid_.clear_force();
+    spread_forces(case_.kernel, order_, x_, f_, fluid_);
+    lap(timings_.spreading);
+    update_viscosity();
+    lap(timings_.indicator);
+  }
   fluid_.step();
   lap(timings_.fluid);
-  move_cells();
-  lap(timings_.interpolation);
+  if (fluid_.steps_done() % interval == 0) {
+    move_cells(static_cast<double>(interval));
+    lap(timings_.interpolation);
+  }
   ++timings_.steps;
 }
 
@@ -250,6 +232,13 @@ void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   x_ = std::move(s.positions);
   v_ = std::move(s.velocities);
   f_ = std::move(s.forces);
+  // Within a coupling interval the force field is the one spread at its start, from the
+  // positions and forces the checkpoint holds.
+  order_ = order_nodes(case_.kernel, x_, units_.nx, units_.ny, units_.nz);
+  if (fluid_.steps_done() % case_.coupling_interval != 0) {
+    fluid_.clear_force();
+    spread_forces(case_.kernel, order_, x_, f_, fluid_);
+  }
   if (!contrast) return;
   x_indicator_ = std::move(s.indicator_positions);
   rebuild_viscosity();

@@ -4,15 +4,19 @@
 // a time, with the viscosity contrast lambda inside the cells. Everything inside runs
 // in lattice units (lattice_units.hpp); observables are dimensionless.
 //
-// One step: membrane forces at X^n -> spread to the lattice -> inside fraction and
+// One membrane step (every numerics.coupling_interval = k fluid steps; k = 1: every
+// step): membrane forces at X^n -> spread to the lattice -> inside fraction and
 // viscosity from X^n (or kept from an earlier step while no node has moved farther than
-// numerics.indicator_tolerance) -> stream + collide -> node velocities interpolated from the new
-// populations -> X^{n+1} by Euler or by RK4 through the (frozen) interpolated field ->
-// volume correction (volume_constraint.hpp).
+// numerics.indicator_tolerance) -> k fluid steps (stream + collide) under these fields ->
+// node velocities interpolated from the new populations -> X^{n+k} = X^n + k u by Euler
+// (or RK4 through the frozen interpolated field) -> volume correction
+// (volume_constraint.hpp). A larger k is the membrane time step of HemoCell-style
+// multi-rate coupling; its stability limit is k times tighter (docs/performance.md).
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "solver/coupling/immersed_boundary.hpp"
 #include "solver/coupling/inside_fraction.hpp"
 #include "solver/coupling/stresslet.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
@@ -85,7 +89,7 @@ class ShearFlowSimulation {
   // Fluid velocity at the lattice nodes that the cells' kernels can reach this step
   // (one evaluation of the moments per node instead of one per stencil visit).
   void update_velocity_field();
-  void move_cells();
+  void move_cells(double dt);
 
   SimulationCase case_;
   LatticeUnits units_;
@@ -94,9 +98,10 @@ class ShearFlowSimulation {
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
   std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
-  std::vector<double> u_field_;               // 3 per node, valid where needed_ is set
+  std::vector<double> u_field_;  // x, y, z components, node_count() each; valid in needed_rows_
   StepTimings timings_;
-  std::vector<unsigned char> needed_;
+  NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
+  std::vector<unsigned char> needed_rows_;  // per lattice row (x, y): velocities needed
 };
 
 }  // namespace rbcal::solver

@@ -144,6 +144,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   if (integrator != "rk4" && integrator != "euler") r.fail("numerics.integrator", "must be \"rk4\" or \"euler\"");
   c.integrator = integrator == "euler" ? Integrator::Euler : Integrator::RK4;
   c.indicator_tolerance = r.number("numerics.indicator_tolerance", c.indicator_tolerance, 0.0, 1.0);
+  c.coupling_interval = r.integer("numerics.coupling_interval", c.coupling_interval, 1, 1000);
   c.volume_stiffness = r.number("numerics.volume_stiffness", c.volume_stiffness, 0.0, 1e9);
   c.seed = static_cast<std::uint64_t>(r.number("numerics.seed", 1.0, 0.0, 9.0e15));
 
@@ -182,6 +183,7 @@ nlohmann::json case_to_json(const SimulationCase& c) {
                    {"kernel", to_string(c.kernel)},
                    {"integrator", to_string(c.integrator)},
                    {"indicator_tolerance", c.indicator_tolerance},
+                   {"coupling_interval", c.coupling_interval},
                    {"volume_stiffness", c.volume_stiffness},
                    {"seed", c.seed}};
   j["run"] = {{"strain_end", c.strain_end},

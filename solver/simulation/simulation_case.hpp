@@ -44,6 +44,8 @@ struct SimulationCase {
   // lattice spacings since the last rebuild (0: every step). Cells move about 0.01-0.02
   // spacings per step, while the indicator is itself only accurate to O(dx).
   double indicator_tolerance = 0.0;
+  // Fluid steps per membrane step (forces, spreading, inside fraction, node update).
+  int coupling_interval = 1;
   double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force
   std::uint64_t seed = 1;
   // run
