@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -53,18 +54,31 @@ void run_case_bench(const BenchOptions& o) {
   const solver::StepTimings& t = sim.timings();
   const double per = 1e3 / static_cast<double>(t.steps);
   const double coupling = t.membrane_forces + t.spreading + t.indicator + t.interpolation;
+  // The plain fluid update of the same lattice (no velocity output, no coupling): the
+  // yardstick of the whole step.
+  solver::FluidLattice plain(sim.fluid().config());
+  plain.step();
+  const auto plain_start = std::chrono::steady_clock::now();
+  for (int s = 0; s < o.case_steps; ++s) plain.step();
+  const double plain_fluid =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - plain_start).count() / o.case_steps;
+  const double whole = (t.fluid + coupling) / static_cast<double>(t.steps);
   std::size_t nodes = 0;
   for (const auto& x : sim.positions()) nodes += x.size();
   std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n", o.case_path.c_str(), build_info::git_revision,
               omp_get_max_threads(), solver::host_name().c_str());
-  std::printf("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps\n", sim.units().nx,
-              sim.units().ny, sim.units().nz, sim.positions().size(), nodes, static_cast<long long>(t.steps));
-  std::printf("  fluid update                 %9.3f ms/step\n", t.fluid * per);
+  std::printf("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps, coupling interval %d\n",
+              sim.units().nx, sim.units().ny, sim.units().nz, sim.positions().size(), nodes,
+              static_cast<long long>(t.steps), c.coupling_interval);
+  std::printf("  fluid update (+ velocity field) %9.3f ms/step\n", t.fluid * per);
   std::printf("  membrane forces              %9.3f ms/step\n", t.membrane_forces * per);
   std::printf("  force spreading              %9.3f ms/step\n", t.spreading * per);
   std::printf("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", t.indicator * per,
               static_cast<long long>(t.indicator_builds));
   std::printf("  interpolation + node update  %9.3f ms/step\n", t.interpolation * per);
+  std::printf("  whole step                   %9.3f ms/step\n", whole * 1e3);
+  std::printf("  plain fluid update           %9.3f ms/step (same lattice, no cells)\n", plain_fluid * 1e3);
+  std::printf("  whole step / plain fluid     %9.2f (target <= 4)\n", whole / plain_fluid);
   std::printf("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling / t.fluid);
   if (!o.json_path.empty())
     write_json(o.json_path, {{"case", o.case_path},
@@ -73,6 +87,8 @@ void run_case_bench(const BenchOptions& o) {
                              {"threads", omp_get_max_threads()},
                              {"steps", t.steps},
                              {"indicator_builds", t.indicator_builds},
+                             {"coupling_interval", c.coupling_interval},
+                             {"plain_fluid_seconds_per_step", plain_fluid},
                              {"seconds", {{"fluid", t.fluid},
                                           {"membrane_forces", t.membrane_forces},
                                           {"spreading", t.spreading},

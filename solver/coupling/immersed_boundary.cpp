@@ -96,37 +96,9 @@ void store4(double* p, v4d v) { std::memcpy(p, &v, sizeof v); }
 // True where the stencil's z nodes are four consecutive lattice nodes (no seam).
 bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.z[0] + 3; }
 
-// Adds one node's force through its stencil. Away from the z seam, the 4-point stencil
-// adds to each row's two groups of four nodes that start at indices divisible by 4 (its
-// four nodes and neighbours with weight 0): every access then repeats an earlier one
-// exactly or misses it, so no load waits on a partly overlapping store of the previous
-// node (a failed store-to-load forwarding, which cost more than the extra add). The
-// zero-weight neighbours can lie in the adjacent row, which is in the same x-slab or in
-// one that no other thread writes at the same time (spread_forces).
-void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz, std::size_t nodes) {
+// Adds one node's force through its stencil.
+void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz) {
   if (contiguous_z4(s)) {
-    const std::size_t last = (static_cast<std::size_t>(s.x[3]) * ny + s.y[3]) * nz + s.z[0];
-    const std::size_t shift = last & 3;  // the same for every row when nz % 4 == 0, else per row
-    if (nz % 4 == 0 && last - shift + 8 <= nodes) {
-      v4d lo[3], hi[3];
-      for (int d = 0; d < 3; ++d) {
-        double lanes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (int c = 0; c < 4; ++c) lanes[shift + c] = s.wz[c] * force[d];
-        lo[d] = load4(lanes);
-        hi[d] = load4(lanes + 4);
-      }
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-          const double wab = s.wx[a] * s.wy[b];
-          if (wab == 0.0) continue;
-          const std::size_t base = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0] - shift;
-          for (int d = 0; d < 3; ++d) {
-            store4(f[d] + base, load4(f[d] + base) + wab * lo[d]);
-            store4(f[d] + base + 4, load4(f[d] + base + 4) + wab * hi[d]);
-          }
-        }
-      return;
-    }
     const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
     const v4d fz[3] = {wz * force[0], wz * force[1], wz * force[2]};
     for (int a = 0; a < 4; ++a)
@@ -153,7 +125,8 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
 
 }  // namespace
 
-NodeOrder order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz) {
+void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+                 const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order) {
   // Counting sort by the lattice index (x * ny + y) * nz + z of the stencil's first node;
   // stable, so the order (and every sum that follows it) does not depend on the thread
   // count.
@@ -164,29 +137,35 @@ NodeOrder order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& p
     return (static_cast<std::size_t>(x) * ny + y) * nz + z;
   };
   const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
-  std::vector<std::uint32_t> start(keys + 1, 0);
-  std::vector<std::uint32_t> key;
+  auto& start = order.start;
+  auto& key = order.key;
+  start.assign(keys + 1, 0);
+  key.clear();
   for (const auto& cell : positions)
     for (const Vec3& p : cell) {
       key.push_back(static_cast<std::uint32_t>(key_of(p)));
       ++start[key.back() + 1];
     }
   for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
-  NodeOrder order;
   const int slabs = (nx + NodeOrder::slab_width - 1) / NodeOrder::slab_width;
   order.slab_start.resize(slabs + 1);
   for (int s = 0; s <= slabs; ++s)
     order.slab_start[s] = start[std::min(keys, static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz)];
-  order.nodes.resize(start.back());
+  const std::size_t total = key.size();
+  order.nodes.resize(total);
+  order.position.resize(total);
+  order.force.assign(forces.empty() ? 0 : total, Vec3::Zero());
   std::size_t g = 0;
   for (std::size_t c = 0; c < positions.size(); ++c)
-    for (std::size_t n = 0; n < positions[c].size(); ++n)
-      order.nodes[start[key[g++]]++] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
-  return order;
+    for (std::size_t n = 0; n < positions[c].size(); ++n) {
+      const std::uint32_t slot = start[key[g++]]++;
+      order.nodes[slot] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
+      order.position[slot] = positions[c][n];
+      if (!forces.empty()) order.force[slot] = forces[c][n];
+    }
 }
 
-void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<std::vector<Vec3>>& positions,
-                   const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid) {
+void spread_forces(KernelKind kernel, const NodeOrder& order, FluidLattice& fluid) {
   const int nx = fluid.nx(), ny = fluid.ny(), nz = fluid.nz();
   double* const f[3] = {fluid.force(0), fluid.force(1), fluid.force(2)};
   // A node's stencil reaches at most support - 1 columns past its slab, so slabs of one
@@ -195,10 +174,8 @@ void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<
   // slab the nodes keep their order, so the sums do not depend on the thread count.
   const int slabs = static_cast<int>(order.slab_start.size()) - 1;
   auto spread_slab = [&](int slab) {
-    for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g) {
-      const auto [c, n] = order.nodes[g];
-      spread_one(make_stencil(kernel, positions[c][n], nx, ny, nz), forces[c][n], f, ny, nz, fluid.node_count());
-    }
+    for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g)
+      spread_one(make_stencil(kernel, order.position[g], nx, ny, nz), order.force[g], f, ny, nz);
   };
   const bool odd_count = slabs % 2 == 1;
   const int paired = odd_count ? slabs - 1 : slabs;
@@ -211,7 +188,9 @@ void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<
 
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid) {
-  spread_forces(kernel, order_nodes(kernel, positions, fluid.nx(), fluid.ny(), fluid.nz()), positions, forces, fluid);
+  NodeOrder order;
+  order_nodes(kernel, positions, forces, fluid.nx(), fluid.ny(), fluid.nz(), order);
+  spread_forces(kernel, order, fluid);
 }
 
 void spread_forces(KernelKind kernel, const std::vector<Vec3>& positions, const std::vector<Vec3>& forces,

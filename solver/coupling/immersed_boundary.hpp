@@ -25,22 +25,26 @@ struct KernelStencil {
 
 KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
 
-// Membrane nodes (cell, node) sorted by the lattice node where their stencil starts:
-// neighbours in the list touch the same lattice nodes, which keeps the fields in cache
-// (sorting by row only left a third of the speed-up), and the x-slabs that parallel
-// spreading colours are contiguous ranges.
+// Membrane nodes sorted by the lattice node where their stencil starts, with copies of
+// their positions and forces in that order: neighbours in the list touch the same
+// lattice nodes, and their data lie side by side, which keeps both in cache (reading
+// positions and forces in mesh order through the sorted index cost as much as the
+// spreading itself). The x-slabs that parallel spreading colours are contiguous ranges.
 struct NodeOrder {
   // Slab width in x: at least the widest support less one, so that slabs two apart never
   // write the same lattice node.
   static constexpr int slab_width = 4;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
+  std::vector<Vec3> position, force;                           // of nodes[g]
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
+  std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
 };
-NodeOrder order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz);
+// Fills order for these nodes (forces: the same shape as positions, or empty).
+void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+                 const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);
 
 // Adds each node's force (lattice units, force per node) to the lattice force field.
-void spread_forces(KernelKind kernel, const NodeOrder& order, const std::vector<std::vector<Vec3>>& positions,
-                   const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
+void spread_forces(KernelKind kernel, const NodeOrder& order, FluidLattice& fluid);
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
 // The same for one set of nodes.

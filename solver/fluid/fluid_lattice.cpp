@@ -59,7 +59,7 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
   for (int q = 0; q < Q; ++q) f_[q * stride_ + node] = feq[q];
 }
 
-void FluidLattice::update_row(int x, int y) {
+void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
   using simd::vdouble;
   constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
@@ -139,7 +139,16 @@ void FluidLattice::update_row(int x, int y) {
         fz_v[l] = fz[z];
       }
     }
-    collide_trt(f, nu_v, config_.magic, fx_v, fy_v, fz_v);
+    vdouble u[3];
+    collide_trt(f, nu_v, config_.magic, fx_v, fy_v, fz_v, velocity_out ? u : nullptr);
+    if (velocity_out) {
+      for (int d = 0; d < 3; ++d) {
+        double* out_u = velocity_out[d] + row + z0;
+        if (z0 + W <= nz) simd::store(out_u, u[d]);
+        else
+          for (int l = 0; z0 + l < nz; ++l) out_u[l] = u[d][l];
+      }
+    }
     if (z0 + W <= nz) {
       if (streaming_stores) {
         for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
@@ -153,7 +162,7 @@ void FluidLattice::update_row(int x, int y) {
   }
 }
 
-void FluidLattice::step() {
+void FluidLattice::step(double* const velocity_out[3]) {
   const int nx = config_.nx, ny = config_.ny;
   // Below a few thousand nodes a thread team costs more than it saves.
   const bool threaded = nodes_ >= 4096;
@@ -161,7 +170,7 @@ void FluidLattice::step() {
   {
 #pragma omp for collapse(2) schedule(static) nowait
     for (int x = 0; x < nx; ++x)
-      for (int y = 0; y < ny; ++y) update_row(x, y);
+      for (int y = 0; y < ny; ++y) update_row(x, y, velocity_out);
     simd::store_fence();  // streaming stores visible before the barrier
   }
   f_.swap(f_next_);

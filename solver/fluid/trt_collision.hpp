@@ -50,9 +50,10 @@ inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
 
 }  // namespace trt_detail
 
-// Collides the populations f[0..18] of one node (or one vector of nodes) in place.
+// Collides the populations f[0..18] of one node (or one vector of nodes) in place; with
+// u_out, also stores the velocity u that entered the collision (x, y, z).
 template <class T>
-inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz) {
+inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = nullptr) {
   using namespace d3q19;
   using namespace trt_detail;
   constexpr auto all = std::make_integer_sequence<int, Q>{};
@@ -63,6 +64,11 @@ inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz) {
   const T ux = (first_moment<0>(f, all) + 0.5 * fx) * inv_rho;
   const T uy = (first_moment<1>(f, all) + 0.5 * fy) * inv_rho;
   const T uz = (first_moment<2>(f, all) + 0.5 * fz) * inv_rho;
+  if (u_out) {
+    u_out[0] = ux;
+    u_out[1] = uy;
+    u_out[2] = uz;
+  }
   const T usq = ux * ux + uy * uy + uz * uz;
   const T uf = ux * fx + uy * fy + uz * fz;
 

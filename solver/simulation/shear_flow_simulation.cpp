@@ -118,32 +118,7 @@ void ShearFlowSimulation::rebuild_viscosity() {
   for (std::size_t n : inside_.touched()) nu[n] = units_.nu_out * (1.0 + (lambda - 1.0) * inside_.alpha()[n]);
 }
 
-void ShearFlowSimulation::update_velocity_field() {
-  const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
-  const std::size_t nodes = fluid_.node_count();
-  if (u_field_.size() != 3 * nodes) u_field_.assign(3 * nodes, 0.0);
-  // Lattice rows (x, y; all z) that some cell's kernel can reach: the cells' bounding
-  // boxes in x and y, widened by the kernel reach and one step of motion.
-  needed_rows_.assign(static_cast<std::size_t>(nx) * ny, 0);
-  const int reach = kernel_support(case_.kernel) / 2 + 2;
-  for (const auto& x : x_) {
-    const auto [lo, hi] = bounding_box(x);
-    const int x0 = static_cast<int>(std::floor(lo.x())) - reach, x1 = static_cast<int>(std::ceil(hi.x())) + reach;
-    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y())) - reach);
-    const int y1 = std::min(ny - 1, static_cast<int>(std::ceil(hi.y())) + reach);
-    if (y1 < y0) continue;
-    for (int i = x0; i <= std::min(x1, x0 + nx - 1); ++i)
-      std::fill_n(needed_rows_.begin() + static_cast<std::size_t>(((i % nx) + nx) % nx) * ny + y0, y1 - y0 + 1, 1);
-  }
-  double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
-  const long rows = static_cast<long>(needed_rows_.size());
-#pragma omp parallel for schedule(static)
-  for (long r = 0; r < rows; ++r)
-    if (needed_rows_[r]) fluid_.velocities(static_cast<std::size_t>(r) * nz, nz, u);
-}
-
 void ShearFlowSimulation::move_cells(double dt) {
-  update_velocity_field();
   const KernelKind k = case_.kernel;
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
   const std::size_t nodes = fluid_.node_count();
@@ -155,7 +130,7 @@ void ShearFlowSimulation::move_cells(double dt) {
 #pragma omp parallel for schedule(static)
   for (long g = 0; g < total; ++g) {
     const auto [cell, m] = order_.nodes[g];
-    const Vec3& x = x_[cell][m];
+    const Vec3& x = order_.position[g];
     const Vec3 u1 = velocity_at(x);
     if (case_.integrator == Integrator::Euler) {
       v_[cell][m] = u1;
@@ -188,14 +163,19 @@ void ShearFlowSimulation::step() {
   if (fluid_.steps_done() % interval == 0) {
     compute_membrane_forces();
     lap(timings_.membrane_forces);
-    order_ = order_nodes(case_.kernel, x_, units_.nx, units_.ny, units_.nz);
+    order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     fluid_.clear_force();
-    spread_forces(case_.kernel, order_, x_, f_, fluid_);
+    spread_forces(case_.kernel, order_, fluid_);
     lap(timings_.spreading);
     update_viscosity();
     lap(timings_.indicator);
   }
-  fluid_.step();
+  // The step before a membrane update also writes the velocity field it interpolates.
+  const bool update_follows = (fluid_.steps_done() + 1) % interval == 0;
+  const std::size_t nodes = fluid_.node_count();
+  if (update_follows && u_field_.size() != 3 * nodes) u_field_.assign(3 * nodes, 0.0);
+  double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
+  fluid_.step(update_follows ? u : nullptr);
   lap(timings_.fluid);
   if (fluid_.steps_done() % interval == 0) {
     move_cells(static_cast<double>(interval));
@@ -234,10 +214,10 @@ void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   f_ = std::move(s.forces);
   // Within a coupling interval the force field is the one spread at its start, from the
   // positions and forces the checkpoint holds.
-  order_ = order_nodes(case_.kernel, x_, units_.nx, units_.ny, units_.nz);
+  order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
   if (fluid_.steps_done() % case_.coupling_interval != 0) {
     fluid_.clear_force();
-    spread_forces(case_.kernel, order_, x_, f_, fluid_);
+    spread_forces(case_.kernel, order_, fluid_);
   }
   if (!contrast) return;
   x_indicator_ = std::move(s.indicator_positions);

@@ -38,8 +38,8 @@ struct StepTimings {
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field
   std::int64_t indicator_builds = 0;  // steps that rebuilt it (numerics.indicator_tolerance)
-  double fluid = 0.0;            // lattice Boltzmann stream + collide
-  double interpolation = 0.0;    // velocity field, interpolation, node update, volume correction
+  double fluid = 0.0;            // lattice Boltzmann stream + collide (+ velocity field before an update)
+  double interpolation = 0.0;    // interpolation, node update, volume correction
   std::int64_t steps = 0;
 };
 
@@ -86,9 +86,6 @@ class ShearFlowSimulation {
   // numerics.indicator_tolerance since the last rebuild (always when it is 0).
   void update_viscosity();
   void rebuild_viscosity();  // from x_indicator_
-  // Fluid velocity at the lattice nodes that the cells' kernels can reach this step
-  // (one evaluation of the moments per node instead of one per stencil visit).
-  void update_velocity_field();
   void move_cells(double dt);
 
   SimulationCase case_;
@@ -98,10 +95,12 @@ class ShearFlowSimulation {
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
   std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
-  std::vector<double> u_field_;  // x, y, z components, node_count() each; valid in needed_rows_
+  // Fluid velocity at every lattice node (x, y, z components, node_count() each), written
+  // by the fluid step before a membrane update: one evaluation of the moments per node
+  // instead of one per stencil visit.
+  std::vector<double> u_field_;
   StepTimings timings_;
   NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
-  std::vector<unsigned char> needed_rows_;  // per lattice row (x, y): velocities needed
 };
 
 }  // namespace rbcal::solver

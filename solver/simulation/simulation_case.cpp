@@ -140,7 +140,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   for (double b : c.resolution.box_in_radii)
     if (!(b > 0.0)) r.fail("numerics.box", "lengths must be positive");
   c.flow.reynolds_number = r.number("numerics.Re", c.flow.reynolds_number, 1e-6, 100.0);
-  const std::string integrator = r.text("numerics.integrator", "rk4");
+  const std::string integrator = r.text("numerics.integrator", to_string(c.integrator));
   if (integrator != "rk4" && integrator != "euler") r.fail("numerics.integrator", "must be \"rk4\" or \"euler\"");
   c.integrator = integrator == "euler" ? Integrator::Euler : Integrator::RK4;
   c.indicator_tolerance = r.number("numerics.indicator_tolerance", c.indicator_tolerance, 0.0, 1.0);

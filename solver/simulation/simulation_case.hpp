@@ -39,11 +39,14 @@ struct SimulationCase {
   // numerics
   LatticeResolution resolution;
   KernelKind kernel = KernelKind::Peskin4;
-  Integrator integrator = Integrator::RK4;
+  // Euler by default: RK4 through the frozen field of one step changed eta_re of dense
+  // cases by a few 1e-5 relative (docs/performance.md) at twice the cost of the step.
+  Integrator integrator = Integrator::Euler;
   // The inside fraction is rebuilt once a membrane node has moved more than this many
   // lattice spacings since the last rebuild (0: every step). Cells move about 0.01-0.02
-  // spacings per step, while the indicator is itself only accurate to O(dx).
-  double indicator_tolerance = 0.0;
+  // spacings per step, while the indicator is itself only accurate to O(dx); 0.1 changed
+  // eta_re of dense cases by a fraction of one standard error (docs/performance.md).
+  double indicator_tolerance = 0.1;
   // Fluid steps per membrane step (forces, spreading, inside fraction, node update).
   int coupling_interval = 1;
   double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force

@@ -43,10 +43,10 @@ constexpr double kLaggingTolerance = 0.02;
 
 class CheckpointAtIndicatorTolerance : public ::testing::TestWithParam<double> {};
 
-TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
+// Runs c for 40 steps straight and as 20 + checkpoint + restore + 20; expects the two to
+// agree bit for bit.
+void expect_restart_bit_identical(const SimulationCase& c) {
   const std::string path = (std::filesystem::temp_directory_path() / "rbcal_checkpoint_test.bin").string();
-  SimulationCase c = tiny_case();
-  c.indicator_tolerance = GetParam();
   ShearFlowSimulation straight(c);
   for (int s = 0; s < 40; ++s) straight.step();
 
@@ -74,6 +74,46 @@ TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
   const auto& alpha_b = resumed.inside_fraction().alpha();
   for (std::size_t n = 0; n < alpha_a.size(); ++n) ASSERT_EQ(alpha_a[n], alpha_b[n]) << "inside fraction at node " << n;
   std::filesystem::remove(path);
+}
+
+TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
+  SimulationCase c = tiny_case();
+  c.indicator_tolerance = GetParam();
+  expect_restart_bit_identical(c);
+}
+
+// With numerics.coupling_interval 3 the checkpoint at step 20 falls inside an interval,
+// whose force field the restore must rebuild from the saved positions and forces.
+TEST(CheckpointInsideACouplingInterval, RestartContinuesBitIdentically) {
+  SimulationCase c = tiny_case();
+  c.coupling_interval = 3;
+  expect_restart_bit_identical(c);
+}
+
+// The membrane moves only at the end of each interval, by k times the interpolated velocity.
+TEST(CouplingInterval, MovesTheMembraneEveryKStepsByKTimesItsVelocity) {
+  SimulationCase c = tiny_case();
+  c.coupling_interval = 3;
+  ShearFlowSimulation sim(c);
+  for (int s = 0; s < 3; ++s) sim.step();
+  for (int interval = 0; interval < 3; ++interval) {
+    const auto start = sim.positions()[0];
+    sim.step();
+    sim.step();
+    EXPECT_EQ(sim.positions()[0], start) << "moved inside interval " << interval;
+    sim.step();
+    // The volume correction moves nodes along the volume gradient, whose sum over a closed
+    // surface vanishes, so the mean node displacement is exactly k times the mean velocity.
+    Vec3 moved = Vec3::Zero(), velocity = Vec3::Zero();
+    double scale = 0.0;  // of the single displacements, for the round-off of the sums
+    for (std::size_t n = 0; n < start.size(); ++n) {
+      moved += sim.positions()[0][n] - start[n];
+      velocity += sim.velocities()[0][n];
+      scale += 3.0 * sim.velocities()[0][n].norm();
+    }
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_NEAR((moved - 3.0 * velocity).norm(), 0.0, 1e-10 * scale) << "interval " << interval;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryStepAndLagging, CheckpointAtIndicatorTolerance,
@@ -106,7 +146,9 @@ TEST(IndicatorTolerance, RebuildsOnceANodeHasMovedFartherThanTheTolerance) {
 }
 
 TEST(IndicatorTolerance, ZeroRebuildsEveryStep) {
-  ShearFlowSimulation sim(tiny_case());
+  SimulationCase c = tiny_case();
+  c.indicator_tolerance = 0.0;
+  ShearFlowSimulation sim(c);
   const std::int64_t at_start = sim.timings().indicator_builds;
   for (int s = 0; s < 10; ++s) sim.step();
   EXPECT_EQ(sim.timings().indicator_builds - at_start, 10);
