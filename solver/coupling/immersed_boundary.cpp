@@ -12,6 +12,11 @@ namespace {
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
+// FluidLattice::index for a lattice of ny x nz rows (x-major, z fastest).
+std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
+  return (static_cast<std::size_t>(x) * ny + y) * nz + z;
+}
+
 // First node of the support and the weights along one direction. The 2- and 4-point
 // weights come in closed form from the fractional position: the four Peskin weights
 // share one square root (substitute r + 1, r, 1 - r, 2 - r into the kernel), which
@@ -105,7 +110,7 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
       for (int b = 0; b < 4; ++b) {
         const double wab = s.wx[a] * s.wy[b];
         if (wab == 0.0) continue;
-        const std::size_t at = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0];
+        const std::size_t at = lattice_index(s.x[a], s.y[b], s.z[0], ny, nz);
         for (int d = 0; d < 3; ++d) store4(f[d] + at, load4(f[d] + at) + wab * fz[d]);
       }
     return;
@@ -114,7 +119,7 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
     for (int b = 0; b < s.count; ++b) {
       const double wab = s.wx[a] * s.wy[b];
       if (wab == 0.0) continue;
-      const std::size_t row = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz;
+      const std::size_t row = lattice_index(s.x[a], s.y[b], 0, ny, nz);
       for (int c = 0; c < s.count; ++c) {
         const double w = wab * s.wz[c];
         const std::size_t node = row + s.z[c];
@@ -134,7 +139,7 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     const int x = wrap(support_start(kernel, p.x()), nx);
     const int y = std::clamp(support_start(kernel, p.y()), 0, ny - 1);
     const int z = wrap(support_start(kernel, p.z()), nz);
-    return (static_cast<std::size_t>(x) * ny + y) * nz + z;
+    return lattice_index(x, y, z, ny, nz);
   };
   const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
   auto& start = order.start;
@@ -154,14 +159,14 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   const std::size_t total = key.size();
   order.nodes.resize(total);
   order.position.resize(total);
-  order.force.assign(forces.empty() ? 0 : total, Vec3::Zero());
+  order.force.resize(total);
   std::size_t g = 0;
   for (std::size_t c = 0; c < positions.size(); ++c)
     for (std::size_t n = 0; n < positions[c].size(); ++n) {
       const std::uint32_t slot = start[key[g++]]++;
       order.nodes[slot] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
       order.position[slot] = positions[c][n];
-      if (!forces.empty()) order.force[slot] = forces[c][n];
+      order.force[slot] = forces[c][n];
     }
 }
 
@@ -205,7 +210,7 @@ Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny,
       for (int b = 0; b < 4; ++b) {
         const double wab = s.wx[a] * s.wy[b];
         if (wab == 0.0) continue;
-        const std::size_t at = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz + s.z[0];
+        const std::size_t at = lattice_index(s.x[a], s.y[b], s.z[0], ny, nz);
         for (int d = 0; d < 3; ++d) sum[d] += wab * load4(u[d] + at);
       }
     const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
@@ -217,7 +222,7 @@ Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny,
     return out;
   }
   return interpolate(s, [&](int i, int j, int k) {
-    const std::size_t n = (static_cast<std::size_t>(i) * ny + j) * nz + k;
+    const std::size_t n = lattice_index(i, j, k, ny, nz);
     return Vec3(u[0][n], u[1][n], u[2][n]);
   });
 }

@@ -39,7 +39,7 @@ struct NodeOrder {
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
 };
-// Fills order for these nodes (forces: the same shape as positions, or empty).
+// Fills order for these nodes (forces: the same shape as positions).
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);
 

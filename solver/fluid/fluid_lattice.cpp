@@ -197,35 +197,6 @@ NodeMoments FluidLattice::moments(std::size_t node) const {
           (jz - 0.5 * force(2)[node]) / rho};
 }
 
-void FluidLattice::velocities(std::size_t first, std::size_t count, double* const u[3]) const {
-  constexpr std::size_t kBlock = 256;
-  double rho[kBlock], jx[kBlock], jy[kBlock], jz[kBlock];
-  for (std::size_t begin = first; begin < first + count; begin += kBlock) {
-    const std::size_t n = std::min(kBlock, first + count - begin);
-    std::fill_n(rho, n, 0.0);
-    std::fill_n(jx, n, 0.0);
-    std::fill_n(jy, n, 0.0);
-    std::fill_n(jz, n, 0.0);
-    for (int q = 0; q < Q; ++q) {  // the same order of additions as moments()
-      const double* fq = f_.data() + q * stride_ + begin;
-      const double cx = c[q][0], cy = c[q][1], cz = c[q][2];
-      for (std::size_t i = 0; i < n; ++i) {
-        rho[i] += fq[i];
-        jx[i] += fq[i] * cx;
-        jy[i] += fq[i] * cy;
-        jz[i] += fq[i] * cz;
-      }
-    }
-    const double *gx = force(0) + begin, *gy = force(1) + begin, *gz = force(2) + begin;
-    double *ox = u[0] + begin, *oy = u[1] + begin, *oz = u[2] + begin;
-    for (std::size_t i = 0; i < n; ++i) {
-      ox[i] = (jx[i] - 0.5 * gx[i]) / rho[i];
-      oy[i] = (jy[i] - 0.5 * gy[i]) / rho[i];
-      oz[i] = (jz[i] - 0.5 * gz[i]) / rho[i];
-    }
-  }
-}
-
 double FluidLattice::total_mass() const {
   double mass = 0.0;
   for (int q = 0; q < Q; ++q) {

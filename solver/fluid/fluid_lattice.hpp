@@ -76,11 +76,6 @@ class FluidLattice {
   void step(double* const velocity_out[3] = nullptr);
 
   NodeMoments moments(std::size_t node) const;
-  // Velocities of the nodes [first, first + count) into u[d][first..], equal to those of
-  // moments(node). Streams through one population array at a time: node by node, the
-  // 19 loads fall into the same cache sets (the arrays are 2 MiB aligned).
-  void velocities(std::size_t first, std::size_t count, double* const u[3]) const;
-
   // The whole state (post-collision populations and step count), for checkpoints.
   const AlignedVector<double>& populations() const { return f_; }
   void restore(const std::vector<double>& populations, std::int64_t steps);

@@ -214,8 +214,8 @@ void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   f_ = std::move(s.forces);
   // Within a coupling interval the force field is the one spread at its start, from the
   // positions and forces the checkpoint holds.
-  order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
   if (fluid_.steps_done() % case_.coupling_interval != 0) {
+    order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     fluid_.clear_force();
     spread_forces(case_.kernel, order_, fluid_);
   }
