@@ -53,7 +53,7 @@ void run_case_bench(const BenchOptions& o) {
   for (int s = 0; s < o.case_steps; ++s) step();
   const solver::StepTimings& t = sim.timings();
   const double per = 1e3 / static_cast<double>(t.steps);
-  const double coupling = t.membrane_forces + t.spreading + t.indicator + t.interpolation;
+  const double coupling = t.membrane_forces + t.ordering + t.spreading + t.indicator + t.interpolation;
   // The plain fluid update of the same lattice (no velocity output, no coupling): the
   // yardstick of the whole step.
   solver::FluidLattice plain(sim.fluid().config());
@@ -72,6 +72,7 @@ void run_case_bench(const BenchOptions& o) {
               static_cast<long long>(t.steps), c.coupling_interval);
   std::printf("  fluid update (+ velocity field) %9.3f ms/step\n", t.fluid * per);
   std::printf("  membrane forces              %9.3f ms/step\n", t.membrane_forces * per);
+  std::printf("  node ordering                %9.3f ms/step\n", t.ordering * per);
   std::printf("  force spreading              %9.3f ms/step\n", t.spreading * per);
   std::printf("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", t.indicator * per,
               static_cast<long long>(t.indicator_builds));
@@ -91,6 +92,7 @@ void run_case_bench(const BenchOptions& o) {
                              {"plain_fluid_seconds_per_step", plain_fluid},
                              {"seconds", {{"fluid", t.fluid},
                                           {"membrane_forces", t.membrane_forces},
+                                          {"ordering", t.ordering},
                                           {"spreading", t.spreading},
                                           {"indicator", t.indicator},
                                           {"interpolation", t.interpolation}}}});

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace rbcal::solver {
@@ -40,6 +42,10 @@ void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positio
   crossings_.resize(positions.size());
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < positions.size(); ++i) crossings_of(*positions[i], triangles, crossings_[i]);
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (crossings_[i].oversized)
+      throw std::runtime_error("inside fraction: cell " + std::to_string(i) +
+                               " spans more than the lattice in x or y (the membrane has blown up)");
   for (const Crossings& c : crossings_) apply(c);
   // Changed nodes: the old footprint and the new (a node may appear in both).
   touched_ = std::move(previous);
@@ -56,6 +62,13 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
   // Crossings per scan line, in a flat grid over the mesh's bounding box of lines.
   const Bounds box = bounding_box(x);
   const double xmin = box.lo.x(), xmax = box.hi.x(), ymin = box.lo.y(), ymax = box.hi.y();
+  // A cell cannot be wider than the box; one that is has blown up, and its grid of scan
+  // lines would grow with it (an unguarded run reached 7 GB). NaN coordinates count too.
+  out.oversized = !(xmax - xmin < nx_ && ymax - ymin < ny_ + 1);
+  if (out.oversized) {
+    out.hits.clear();
+    return;
+  }
   auto first_line = [&](double lo, double offset) { return static_cast<int>(std::ceil((lo + 0.5 - offset) * sub_ - 0.5)); };
   auto last_line = [&](double hi, double offset) { return static_cast<int>(std::floor((hi + 0.5 - offset) * sub_ - 0.5)); };
   const int pbase = first_line(xmin, kLineOffsetX), qbase = first_line(ymin, kLineOffsetY);

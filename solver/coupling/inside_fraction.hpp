@@ -42,6 +42,7 @@ class InsideFraction {
   };
   struct Crossings {
     int pbase = 0, qbase = 0, qcount = 0;  // first line indices, lines along y
+    bool oversized = false;  // the mesh spans more than the lattice in x or y: no hits
     std::vector<Hit> hits;
     std::vector<Hit> unsorted;  // scratch, kept between updates with its capacity
     std::vector<int> line_start;  // scratch for the counting sort by line

@@ -130,7 +130,11 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
 
   auto last_report = std::chrono::steady_clock::now();
   for (std::int64_t step = first_step; step <= total_steps; ++step) {
-    sim.step();
+    try {
+      sim.step();
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("run stopped at step " + std::to_string(step) + ": " + e.what());
+    }
     if (step % record_every == 0 || step == total_steps) {
       const Observables o = sim.observe();
       try {

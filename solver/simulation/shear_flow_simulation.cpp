@@ -164,6 +164,7 @@ void ShearFlowSimulation::step() {
     compute_membrane_forces();
     lap(timings_.membrane_forces);
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
+    lap(timings_.ordering);
     fluid_.clear_force();
     spread_forces(case_.kernel, order_, fluid_);
     lap(timings_.spreading);

@@ -52,3 +52,14 @@ TEST(InsideFraction, WrapsAcrossThePeriodicBoundaryAndResets) {
   f.update({&x}, sphere.triangles);
   EXPECT_NEAR(alpha_sum(f), inside, 3e-3 * inside);
 }
+
+TEST(InsideFraction, RefusesACellWiderThanTheLattice) {
+  // A blown-up membrane: without the guard its scan-line grid grows with its bounding box.
+  const TriangleMesh sphere = make_sphere(320, 5.0);
+  std::vector<Vec3> x = sphere.vertices;
+  for (Vec3& v : x) v = 4.0 * v + Vec3(12.0, 10.0, 16.0);  // diameter 40 > nx = 24
+  InsideFraction f(24, 20, 32);
+  EXPECT_THROW(f.update({&x}, sphere.triangles), std::runtime_error);
+  x[0].x() = std::nan("");
+  EXPECT_THROW(f.update({&x}, sphere.triangles), std::runtime_error);
+}
