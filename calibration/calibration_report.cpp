@@ -1,11 +1,11 @@
 #include "calibration/calibration_report.hpp"
 
-#include <fstream>
 #include <stdexcept>
 
 #include "calibration/report_plots.hpp"
 #include "calibration/report_summary.hpp"
 #include "calibration/report_tables.hpp"
+#include "formats/json_file.hpp"
 
 namespace rbcal::calibration {
 
@@ -53,10 +53,7 @@ ReportFiles write_calibration_report(const CalibrationReport& report, const std:
   }
 
   const std::filesystem::path summary = folder / "summary.json";
-  std::ofstream f(summary);
-  if (!f) throw std::runtime_error("cannot write " + summary.string());
-  f << report_summary(report, out).dump(2) << "\n";
-  if (!f) throw std::runtime_error("error while writing " + summary.string());
+  formats::write_json_atomically(summary, report_summary(report, out));
   out.files.push_back(summary);
   return out;
 }

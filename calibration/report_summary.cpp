@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rbcal/build_info.hpp"
+#include "formats/library_schema.hpp"
+#include "formats/provenance.hpp"
 
 namespace rbcal::calibration {
 
@@ -179,16 +180,15 @@ nlohmann::json sample_summary(const SampleReport& s) {
 
 nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles& files) {
   json j;
-  j["schema"] = "rbcal.calibration_report/1";
+  j["schema"] = formats::kCalibrationReportSchema;
   j["units"] = {{"G_s", "uN/m"}, {"viscosity", "mPa s"}, {"shear_rate", "1/s"}, {"cell_radius", "um"}};
   const ReportProvenance& p = report.provenance;
-  j["provenance"] = {{"rbcal_version", build_info::version},
-                     {"git_revision", build_info::git_revision},
-                     {"data_file", p.data_file},
-                     {"surrogate_file", p.surrogate_file},
-                     {"command_line", p.command_line},
-                     {"options", p.options},
-                     {"seed", p.seed}};
+  j["provenance"] = formats::provenance_block();
+  j["provenance"].update({{"data_file", p.data_file},
+                          {"surrogate_file", p.surrogate_file},
+                          {"command_line", p.command_line},
+                          {"options", p.options},
+                          {"seed", p.seed}});
   j["cell_radius_um"] = report.cell_radius * 1e6;
   json samples = json::array();
   for (const SampleReport& s : report.samples) samples.push_back(sample_summary(s));

@@ -14,9 +14,9 @@
 #include "bench/lattice_throughput.hpp"
 #include "bench/roofline.hpp"
 #include "cli/commands.hpp"
-#include "cli/json_output.hpp"
 #include "rbcal/build_info.hpp"
-#include "solver/io/provenance.hpp"
+#include "formats/json_file.hpp"
+#include "formats/provenance.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
 
@@ -66,7 +66,7 @@ void run_case_bench(const BenchOptions& o) {
   std::size_t nodes = 0;
   for (const auto& x : sim.positions()) nodes += x.size();
   std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n", o.case_path.c_str(), build_info::git_revision,
-              omp_get_max_threads(), solver::host_name().c_str());
+              omp_get_max_threads(), formats::host_name().c_str());
   std::printf("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps, coupling interval %d\n",
               sim.units().nx, sim.units().ny, sim.units().nz, sim.positions().size(), nodes,
               static_cast<long long>(t.steps), c.coupling_interval);
@@ -82,9 +82,8 @@ void run_case_bench(const BenchOptions& o) {
   std::printf("  whole step / plain fluid     %9.2f (target <= 4)\n", whole / plain_fluid);
   std::printf("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling / t.fluid);
   if (!o.json_path.empty())
-    write_json(o.json_path, {{"case", o.case_path},
-                             {"git_revision", build_info::git_revision},
-                             {"host", solver::host_name()},
+    formats::write_json_atomically(o.json_path, {{"case", o.case_path},
+                             {"provenance", formats::provenance_block()},
                              {"threads", omp_get_max_threads()},
                              {"steps", t.steps},
                              {"indicator_builds", t.indicator_builds},
@@ -118,7 +117,7 @@ void run_bench(const BenchOptions& o) {
   const double bytes_per_update = bench::LatticeThroughput::bytes_per_update;
 
   std::printf("rbcal bench (rbcal %s, %s build, %d threads, host %s)\n", build_info::git_revision,
-              build_info::build_type, r.threads, solver::host_name().c_str());
+              build_info::build_type, r.threads, formats::host_name().c_str());
   std::printf("  %d alternating rounds; medians over rounds\n", o.rounds);
   std::printf("  STREAM triad (3 x %.0f MiB)      %8.2f GB/s  ordinary stores, 24 B/element counted\n",
               o.triad_mib, r.median_triad * 1e-9);
@@ -137,9 +136,7 @@ void run_bench(const BenchOptions& o) {
 
   if (!o.json_path.empty()) {
     nlohmann::json j;
-    j["rbcal_version"] = build_info::version;
-    j["git_revision"] = build_info::git_revision;
-    j["host"] = solver::host_name();
+    j["provenance"] = formats::provenance_block();
     j["threads"] = r.threads;
     j["box"] = o.box;
     j["steps_per_round"] = o.steps;
@@ -150,7 +147,7 @@ void run_bench(const BenchOptions& o) {
     j["bytes_per_update"] = bytes_per_update;
     j["roofline_fraction"] = r.fraction_of_triad;
     j["roofline_fraction_streaming_triad"] = r.fraction_of_streaming_triad;
-    write_json(o.json_path, j);
+    formats::write_json_atomically(o.json_path, j);
   }
 }
 

@@ -8,7 +8,8 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "cli/json_output.hpp"
+#include "formats/json_file.hpp"
+#include "formats/provenance.hpp"
 #include "solver/fluid/couette_flow.hpp"
 #include "solver/lattice_units.hpp"
 
@@ -86,7 +87,8 @@ void run_couette(const CouetteOptions& o) {
     j["measured_shear_rate_per_s"] = measured_rate;
     j["wall_shear_stress_Pa"] = wall_stress;
     j["viscosity_from_walls_Pa_s"] = measured_viscosity;
-    write_json(o.json_path, j);
+    j["provenance"] = formats::provenance_block();
+    formats::write_json_atomically(o.json_path, j);
   }
   if (!r.converged) throw std::runtime_error("Couette flow did not reach steady state");
 }

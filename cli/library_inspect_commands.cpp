@@ -9,7 +9,8 @@
 
 #include "cli/commands.hpp"
 #include "surrogate/case_proposal.hpp"
-#include "surrogate/json_file.hpp"
+#include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
 #include "surrogate/library_summary.hpp"
 #include "surrogate/surrogate_file.hpp"
 
@@ -74,7 +75,8 @@ void run_propose(const ProposeOptions& o) {
                      {"relative_sd", p.relative_sd}});
   }
   if (!o.json_path.empty())
-    surrogate::write_json_file_atomically(o.json_path, {{"schema", "rbcal.proposal/1"}, {"library", o.library}, {"cases", cases}});
+    formats::write_json_atomically(o.json_path,
+                                   {{"schema", formats::kProposalSchema}, {"library", o.library}, {"cases", cases}});
 }
 
 }  // namespace

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/json_output.hpp"
-#include "rbcal/build_info.hpp"
+#include "formats/json_file.hpp"
+#include "formats/provenance.hpp"
 #include "solver/membrane/cell_stretching.hpp"
 
 namespace rbcal::cli {
@@ -170,8 +170,7 @@ void run_stretch(StretchOptions o) {
 
   if (!o.json_path.empty()) {
     nlohmann::json j;
-    j["rbcal_version"] = build_info::version;
-    j["git_revision"] = build_info::git_revision;
+    j["provenance"] = formats::provenance_block();
     j["shear_modulus_N_per_m"] = gs;
     j["law"] = o.law;
     j["skalak_c"] = o.skalak_c;
@@ -188,7 +187,7 @@ void run_stretch(StretchOptions o) {
                              {"area_change", p.area_change},
                              {"converged", p.converged}});
     if (compare) j["rms_misfit_um"] = rms_misfit(pts, measured);
-    write_json(o.json_path, j);
+    formats::write_json_atomically(o.json_path, j);
   }
   for (const auto& p : pts)
     if (!p.converged) throw std::runtime_error("equilibrium not reached at " + std::to_string(p.force * 1e12) + " pN");

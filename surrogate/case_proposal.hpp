@@ -6,7 +6,7 @@
 // next choice accounts for it. Hyper-parameters stay fixed.
 #include <vector>
 
-#include "surrogate/case_plan.hpp"
+#include "surrogate/grid_refinement.hpp"
 #include "surrogate/viscosity_surrogate.hpp"
 
 namespace rbcal::surrogate {

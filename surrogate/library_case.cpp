@@ -1,29 +1,17 @@
 #include "surrogate/library_case.hpp"
 
-#include "surrogate/field_reader.hpp"
-#include "surrogate/json_file.hpp"
+#include "formats/field_reader.hpp"
+#include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
 
 namespace rbcal::surrogate {
 
-namespace {
-// The numerics every case of a library must share. The Reynolds number is not among
-// them: a plan may lower it for its low-Ca cases (a time-step choice at Re << 1).
-constexpr const char* kNumericsFields[] = {"numerics.N_a",   "numerics.box",    "numerics.tau_out", "numerics.kernel",
-                                           "cells.triangles", "cells.shape",     "cells.law",        "cells.profile",
-                                           "cells.skalak_c",  "run.window",      "params.kb_hat",    nullptr};
-// These may be absent (the solver's defaults; older case files); the others are required.
-bool optional_signature_field(const std::string& field) {
-  return field == "params.kb_hat" || field == "cells.profile" || field == "cells.skalak_c";
-}
-}  // namespace
-
-const char* const* library_numerics_fields() { return kNumericsFields; }
-
 LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesystem::path& source) {
-  FieldReader r(j, source.string());
+  const formats::FieldReader r(j, source.string());
   if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
   const std::string schema = r.text("schema");
-  if (schema != "rbcal.case/1") r.fail("schema", "must be \"rbcal.case/1\", got \"" + schema + "\"");
+  if (schema != formats::kCaseSchema)
+    r.fail("schema", std::string("must be \"") + formats::kCaseSchema + "\", got \"" + schema + "\"");
 
   LibraryCase c;
   c.id = source.stem().string();
@@ -40,15 +28,7 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
   c.steps = r.integer("result.steps", 0);
   c.wall_seconds = r.non_negative("result.wall_seconds");
 
-  for (const char* const* f = kNumericsFields; *f; ++f) {
-    const std::string field = *f;
-    const nlohmann::json* node = r.find(field);
-    if (!node) {
-      if (optional_signature_field(field)) continue;
-      r.fail(field, "missing");
-    }
-    c.numerics_signature[field] = *node;
-  }
+  c.numerics_signature = formats::numerics_signature(j, source.string());
   r.integer("numerics.N_a", 1);
   r.numbers("numerics.box", 3);
   r.positive("numerics.tau_out");
@@ -62,7 +42,7 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
 }
 
 LibraryCase read_library_case(const std::filesystem::path& file) {
-  return library_case_from_json(read_json_file(file), file);
+  return library_case_from_json(formats::read_json_file(file), file);
 }
 
 }  // namespace rbcal::surrogate

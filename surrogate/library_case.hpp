@@ -26,14 +26,9 @@ struct LibraryCase {
   long long n_cells = 0;
   long long steps = 0;
   double wall_seconds = 0.0;
-  // The numerics every case of one library must share (see numerics_signature()).
+  // The numerics every case of one library must share (formats::numerics_signature).
   nlohmann::json numerics_signature;
 };
-
-// The fields whose values must agree across a library, as (path, value) pairs of a flat
-// object: numerics.{N_a, tau_out, box, Re, kernel}, cells.{triangles, shape, law},
-// run.window and params.kb_hat.
-const char* const* library_numerics_fields();
 
 // Schema-checks a parsed case; errors read "SOURCE: field result.eta_re_sem: must be ...".
 LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesystem::path& source);

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "formats/format_error.hpp"
+#include "formats/library_schema.hpp"
+
 namespace rbcal::surrogate {
 
 namespace {
@@ -15,7 +18,10 @@ bool same_parameters(const LibraryCase& a, const LibraryCase& b) {
          same_value(a.viscosity_ratio, b.viscosity_ratio);
 }
 
-std::string shown(const nlohmann::json* v) { return v ? v->dump() : "(absent)"; }
+std::string shown(const nlohmann::json& signature, const std::string& field) {
+  const auto it = signature.find(field);
+  return it == signature.end() ? "(absent)" : it->dump();
+}
 
 }  // namespace
 
@@ -23,17 +29,11 @@ void check_library_consistency(const std::vector<LibraryCase>& cases) {
   if (cases.empty()) return;
   const LibraryCase& first = cases.front();
   for (const LibraryCase& c : cases) {
-    for (const char* const* f = library_numerics_fields(); *f; ++f) {
-      const auto a = first.numerics_signature.find(*f);
-      const auto b = c.numerics_signature.find(*f);
-      const nlohmann::json* va = a == first.numerics_signature.end() ? nullptr : &*a;
-      const nlohmann::json* vb = b == c.numerics_signature.end() ? nullptr : &*b;
-      const bool equal = (!va && !vb) || (va && vb && *va == *vb);
-      if (!equal)
-        throw std::invalid_argument(c.source.string() + ": field " + *f + ": " + shown(vb) + " differs from " +
-                                    shown(va) + " in " + first.source.string() +
-                                    " (all cases of a library must share their numerics)");
-    }
+    if (const auto field = formats::first_signature_difference(first.numerics_signature, c.numerics_signature))
+      throw formats::FormatError(c.source.string(), *field,
+                                 shown(c.numerics_signature, *field) + " differs from " +
+                                     shown(first.numerics_signature, *field) + " in " + first.source.string() +
+                                     " (all cases of a library must share their numerics)");
   }
   for (std::size_t i = 0; i < cases.size(); ++i)
     for (std::size_t k = 0; k < i; ++k)
@@ -47,7 +47,7 @@ void check_library_consistency(const std::vector<LibraryCase>& cases) {
 SimulationLibrary read_library(const std::filesystem::path& root) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(root)) throw std::invalid_argument(root.string() + ": not a folder");
-  const fs::path case_dir = root / "cases";
+  const fs::path case_dir = formats::library_layout::cases(root);
   if (!fs::is_directory(case_dir))
     throw std::invalid_argument(case_dir.string() + ": missing (a library keeps its finished cases there)");
   std::vector<fs::path> files;
@@ -60,7 +60,8 @@ SimulationLibrary read_library(const std::filesystem::path& root) {
   lib.root = root;
   for (const fs::path& f : files) lib.cases.push_back(read_library_case(f));
   check_library_consistency(lib.cases);
-  if (fs::exists(root / "plan.json")) lib.plan = read_plan_grid(root / "plan.json");
+  const fs::path plan = formats::library_layout::plan(root);
+  if (fs::exists(plan)) lib.plan = formats::read_plan_grid(plan);
   return lib;
 }
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "surrogate/case_plan.hpp"
+#include "surrogate/grid_refinement.hpp"
 #include "surrogate/library_case.hpp"
 
 namespace rbcal::surrogate {
@@ -18,10 +18,11 @@ struct SimulationLibrary {
 };
 
 // Reads every LIB/cases/*.json and LIB/plan.json if present. Rejects, naming the files:
-// a case that fails its schema check; cases whose numerics (N_a, box, tau_out, kernel,
-// mesh triangles, cell shape and profile, membrane law and Skalak C, averaging window,
-// kb_hat; not Re, which a plan may lower for low Ca) differ
-// from the first case's; two cases with the same (phi, Ca, lambda); no cases at all.
+// a case that fails its schema check; cases whose numerics signature
+// (formats/library_schema.hpp: resolution, box, kernel, integrator, indicator tolerance,
+// coupling interval, volume stiffness, mesh, cell shape and law, averaging window,
+// kb_hat; not Re, which a plan may lower for low Ca) differs from the first case's; two
+// cases with the same (phi, Ca, lambda); no cases at all.
 SimulationLibrary read_library(const std::filesystem::path& root);
 
 // The same consistency checks on cases already read (first case = reference).

@@ -1,13 +1,12 @@
 #include "surrogate/surrogate_file.hpp"
 
 #include <cmath>
-#include <cstdlib>
-#include <ctime>
 #include <stdexcept>
 
-#include "rbcal/build_info.hpp"
-#include "surrogate/field_reader.hpp"
-#include "surrogate/json_file.hpp"
+#include "formats/field_reader.hpp"
+#include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
+#include "formats/provenance.hpp"
 #include "surrogate/simulation_library.hpp"
 
 namespace rbcal::surrogate {
@@ -15,16 +14,6 @@ namespace rbcal::surrogate {
 namespace {
 
 const char* const kDimensionNames[3] = {"phi", "ln_Ca", "ln_lambda"};
-
-std::string build_date() {
-  std::time_t t = std::time(nullptr);
-  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) t = static_cast<std::time_t>(std::atoll(epoch));
-  char buf[32];
-  std::tm utc{};
-  gmtime_r(&t, &utc);
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buf;
-}
 
 nlohmann::json vector_json(const Eigen::VectorXd& v) {
   nlohmann::json a = nlohmann::json::array();
@@ -37,7 +26,7 @@ nlohmann::json vector_json(const Eigen::VectorXd& v) {
 nlohmann::json surrogate_to_json(const ViscositySurrogate& s) {
   const GaussianProcessHyperparameters& hp = s.process().hyperparameters();
   nlohmann::json j;
-  j["schema"] = "rbcal.surrogate/1";
+  j["schema"] = formats::kSurrogateSchema;
   j["model"] = "universal kriging of ln eta_re over (phi_actual, ln Ca, ln lambda); mean phi (b0 + b1 ln Ca + "
                "b2 ln lambda), GLS; anisotropic Matern-5/2 kernel; noise (eta_re_sem/eta_re)^2 + nugget + 1e-10";
   j["source_library"] = s.source_library();
@@ -83,17 +72,16 @@ nlohmann::json surrogate_to_json(const ViscositySurrogate& s) {
                         {"max_abs_standardised_residual", loo.max_abs_standardised_residual},
                         {"cases", cases}};
 
-  j["provenance"] = {{"date", build_date()},
-                     {"rbcal_version", build_info::version},
-                     {"git_revision", build_info::git_revision}};
+  j["provenance"] = formats::provenance_block();
   return j;
 }
 
 ViscositySurrogate surrogate_from_json(const nlohmann::json& j, const std::string& source) {
-  FieldReader r(j, source);
+  const formats::FieldReader r(j, source);
   if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
   const std::string schema = r.text("schema");
-  if (schema != "rbcal.surrogate/1") r.fail("schema", "must be \"rbcal.surrogate/1\", got \"" + schema + "\"");
+  if (schema != formats::kSurrogateSchema)
+    r.fail("schema", std::string("must be \"") + formats::kSurrogateSchema + "\", got \"" + schema + "\"");
 
   GaussianProcessHyperparameters hp;
   hp.log_signal_variance = r.number("hyperparameters.log_signal_variance");
@@ -129,11 +117,11 @@ ViscositySurrogate surrogate_from_json(const nlohmann::json& j, const std::strin
 }
 
 void save_surrogate(const ViscositySurrogate& surrogate, const std::filesystem::path& file) {
-  write_json_file_atomically(file, surrogate_to_json(surrogate));
+  formats::write_json_atomically(file, surrogate_to_json(surrogate));
 }
 
 ViscositySurrogate load_surrogate(const std::filesystem::path& file) {
-  return surrogate_from_json(read_json_file(file), file.string());
+  return surrogate_from_json(formats::read_json_file(file), file.string());
 }
 
 ViscositySurrogate build_surrogate(const std::filesystem::path& library_root) {

@@ -5,8 +5,8 @@
 // doubles round-trip exactly and the factorisation is recomputed by the same code).
 //
 // Everything outside the "provenance" key is a deterministic function of the library:
-// building twice gives identical content there. "provenance" holds the build date (or
-// SOURCE_DATE_EPOCH when set, for reproducible files), the rbcal version and git revision.
+// building twice gives identical content there. "provenance" is formats::provenance_block()
+// (version, revision, date honouring SOURCE_DATE_EPOCH, host).
 #include <filesystem>
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,5 @@
 #include "solver/simulation/case_runner.hpp"
 
-#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
@@ -14,9 +13,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rbcal/build_info.hpp"
+#include "formats/json_file.hpp"
+#include "formats/provenance.hpp"
 #include "solver/io/format_duration.hpp"
-#include "solver/io/provenance.hpp"
 #include "solver/io/vtk_writer.hpp"
 #include "solver/simulation/block_average.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
@@ -25,18 +24,6 @@
 namespace rbcal::solver {
 
 namespace fs = std::filesystem;
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("error while writing " + tmp);
-  }
-  fs::rename(tmp, path);
-}
 
 namespace {
 
@@ -194,11 +181,8 @@ nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
       {"inclination_deg_sem", angle.sem},
       {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()},
   };
-  j["provenance"] = {{"rbcal_version", build_info::version},
-                     {"git_revision", build_info::git_revision},
-                     {"date", utc_now()},
-                     {"host", host_name()}};
-  write_file_atomically(opt.output_dir + "/result.json", j.dump(2) + "\n");
+  j["provenance"] = formats::provenance_block();
+  formats::write_json_atomically(opt.output_dir + "/result.json", j);
   return j;
 }
 

@@ -32,8 +32,4 @@ struct RunOptions {
 // stopped the run early, {"status": "interrupted", "strain": ...} with the checkpoint written.
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& options);
 
-// Writes text to path via a temporary file and a rename, so that readers never see a
-// half-written file.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 }  // namespace rbcal::solver

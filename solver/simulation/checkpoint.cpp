@@ -1,11 +1,11 @@
 #include "solver/simulation/checkpoint.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "formats/json_file.hpp"
 
 namespace rbcal::solver {
 
@@ -17,7 +17,7 @@ constexpr char kMagicV1[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '1'};
 
 class Writer {
  public:
-  explicit Writer(std::ofstream& out) : out_(out) {}
+  explicit Writer(std::ostream& out) : out_(out) {}
   void u64(std::uint64_t v) { out_.write(reinterpret_cast<const char*>(&v), sizeof v); }
   void doubles(const double* d, std::size_t n) {
     u64(n);
@@ -29,7 +29,7 @@ class Writer {
   }
 
  private:
-  std::ofstream& out_;
+  std::ostream& out_;
 };
 
 class Reader {
@@ -72,10 +72,10 @@ class Reader {
 }  // namespace
 
 void write_checkpoint(const std::string& path, const CheckpointState& s) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  // Built in memory, then written through a temporary file and a rename: a run killed
+  // while writing keeps its previous checkpoint.
+  std::ostringstream out(std::ios::binary);
   {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write checkpoint " + tmp);
     out.write(kMagic, sizeof kMagic);
     Writer w(out);
     w.u64(s.case_json.size());
@@ -87,10 +87,8 @@ void write_checkpoint(const std::string& path, const CheckpointState& s) {
     w.cells(s.forces);
     w.cells(s.indicator_positions);
     out.write(kMagic, sizeof kMagic);  // end marker: a complete file
-    out.flush();
-    if (!out) throw std::runtime_error("error while writing checkpoint " + tmp);
   }
-  std::filesystem::rename(tmp, path);
+  formats::write_file_atomically(path, out.str());
 }
 
 CheckpointState read_checkpoint(const std::string& path) {

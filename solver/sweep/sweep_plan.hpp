@@ -38,6 +38,4 @@ struct SweepPlan {
 // as a case file would be.
 SweepPlan read_sweep_plan(const std::string& path);
 
-std::string case_id(double phi, double capillary_number, double viscosity_ratio);
-
 }  // namespace rbcal::solver

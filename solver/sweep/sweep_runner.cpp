@@ -7,8 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
 #include "solver/io/format_duration.hpp"
-#include "solver/io/json_file.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/sweep/case_claim.hpp"
 
@@ -29,11 +30,11 @@ std::string slurp(const fs::path& p) {
 // The library remembers its plan; a different plan on the same folder is refused,
 // since its cases would not belong together.
 void record_plan(const SweepPlan& plan, const fs::path& lib) {
-  const fs::path stored = lib / "plan.json";
+  const fs::path stored = formats::library_layout::plan(lib);
   if (fs::exists(stored)) {
     nlohmann::json old;
     try {
-      old = read_json_file(stored.string(), "library plan");
+      old = formats::read_json_file(stored);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(std::string(e.what()) + "; remove it to adopt " + plan.source);
     }
@@ -42,16 +43,19 @@ void record_plan(const SweepPlan& plan, const fs::path& lib) {
                                "; use another library folder");
     return;
   }
-  write_file_atomically(stored.string(), plan.document.dump(2) + "\n");
+  formats::write_json_atomically(stored, plan.document);
 }
 
-bool finished(const fs::path& lib, const std::string& id) { return fs::exists(lib / "cases" / (id + ".json")); }
+bool finished(const fs::path& lib, const std::string& id) {
+  return fs::exists(formats::library_layout::case_result(lib, id));
+}
 
 }  // namespace
 
 SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
   const fs::path lib(opt.library_dir);
-  for (const char* sub : {"cases", "work", "failed"}) fs::create_directories(lib / sub);
+  namespace layout = formats::library_layout;
+  for (const fs::path& sub : {layout::cases(lib), layout::work(lib), layout::failed(lib)}) fs::create_directories(sub);
   record_plan(plan, lib);
 
   std::vector<std::size_t> order;
@@ -77,28 +81,28 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
     const PlannedCase& pc = plan.cases[i];
     if (finished(lib, pc.id)) {
       // A worker killed right after publishing leaves its work folder and lock behind.
-      const fs::path lock = lib / "work" / (pc.id + ".lock");
-      if (fs::exists(lock) || fs::exists(lib / "work" / pc.id)) {
+      const fs::path lock = formats::library_layout::work(lib) / (pc.id + ".lock");
+      if (fs::exists(lock) || fs::exists(formats::library_layout::work(lib) / pc.id)) {
         CaseClaim claim(lock.string());
         if (claim.held()) {
-          fs::remove_all(lib / "work" / pc.id);
+          fs::remove_all(formats::library_layout::work(lib) / pc.id);
           fs::remove(lock);
         }
       }
       continue;
     }
-    const fs::path failed = lib / "failed" / (pc.id + ".txt");
+    const fs::path failed = formats::library_layout::failed(lib) / (pc.id + ".txt");
     if (fs::exists(failed) && !opt.retry_failed) {
       ++sum.failed;
       continue;
     }
-    CaseClaim claim((lib / "work" / (pc.id + ".lock")).string());
+    CaseClaim claim((formats::library_layout::work(lib) / (pc.id + ".lock")).string());
     if (!claim.held()) {
       ++sum.claimed_elsewhere;
       continue;
     }
     if (finished(lib, pc.id)) continue;  // finished between the check and the claim
-    const fs::path work = lib / "work" / pc.id;
+    const fs::path work = formats::library_layout::work(lib) / pc.id;
     const bool resuming = fs::exists(work / "checkpoint.bin");
     if (opt.progress)
       *opt.progress << "[" << opt.worker << "] case " << i << " " << pc.id << (resuming ? ": resuming" : ": starting")
@@ -113,7 +117,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
     try {
       result = run_case(pc.spec, ro);
     } catch (const std::exception& e) {
-      write_file_atomically(failed.string(), std::string(e.what()) + "\n");
+      formats::write_file_atomically(failed, std::string(e.what()) + "\n");
       ++sum.failed;
       if (opt.progress) *opt.progress << "[" << opt.worker << "] case " << pc.id << " FAILED: " << e.what() << std::endl;
       continue;
@@ -124,11 +128,11 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
       return sum;
     }
     // Publish: the series first, the result JSON last (its presence means finished).
-    write_file_atomically((lib / "cases" / (pc.id + ".csv")).string(), slurp(work / "series.csv"));
-    fs::rename(work / "result.json", lib / "cases" / (pc.id + ".json"));
+    formats::write_file_atomically(formats::library_layout::case_series(lib, pc.id), slurp(work / "series.csv"));
+    fs::rename(work / "result.json", formats::library_layout::case_result(lib, pc.id));
     fs::remove(failed);
     fs::remove_all(work);
-    fs::remove(lib / "work" / (pc.id + ".lock"));
+    fs::remove(formats::library_layout::work(lib) / (pc.id + ".lock"));
     ++sum.finished;
     seconds_spent += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (opt.progress) {

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "surrogate/case_proposal.hpp"
-#include "surrogate/json_file.hpp"
+#include "formats/json_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "synthetic_library.hpp"
 
@@ -155,7 +155,8 @@ TEST(SurrogateFile, BuildingTwiceFromALibraryGivesIdenticalContent) {
   save_surrogate(build_surrogate(root), root / "first.json");
   save_surrogate(build_surrogate(root), root / "second.json");
   unsetenv("SOURCE_DATE_EPOCH");
-  const nlohmann::json first = read_json_file(root / "first.json"), second = read_json_file(root / "second.json");
+  const nlohmann::json first = formats::read_json_file(root / "first.json");
+  const nlohmann::json second = formats::read_json_file(root / "second.json");
   EXPECT_EQ(first.dump(), second.dump());
   EXPECT_EQ(first["provenance"]["date"], "2023-11-14T22:13:20Z");
   EXPECT_EQ(first["training"].size(), grid.phi.size() * grid.ca.size() * grid.lambda.size());

@@ -1,15 +1,30 @@
-#include "surrogate/field_reader.hpp"
+#include "formats/field_reader.hpp"
 
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 
-namespace rbcal::surrogate {
+#include "formats/format_error.hpp"
+
+namespace rbcal::formats {
+
+namespace {
+
+std::string shown(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+bool is_index(const std::string& key) {
+  return !key.empty() && key.size() < 10 && key.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
 
 FieldReader::FieldReader(const nlohmann::json& root, std::string source) : root_(root), source_(std::move(source)) {}
 
 void FieldReader::fail(const std::string& field, const std::string& what) const {
-  throw std::invalid_argument(source_ + ": field " + field + ": " + what);
+  throw FormatError(source_, field, what);
 }
 
 const nlohmann::json* FieldReader::find(const std::string& path) const {
@@ -17,13 +32,14 @@ const nlohmann::json* FieldReader::find(const std::string& path) const {
   std::stringstream ss(path);
   std::string key;
   while (std::getline(ss, key, '.')) {
-    if (node->is_array() && !key.empty() && key.find_first_not_of("0123456789") == std::string::npos) {
+    if (node->is_array()) {
+      if (!is_index(key)) fail(path, "parent is an array, not an object");
       const std::size_t index = std::stoul(key);
       if (index >= node->size()) return nullptr;
       node = &(*node)[index];
       continue;
     }
-    if (!node->is_object()) return nullptr;
+    if (!node->is_object()) fail(path, "parent is not an object");
     auto it = node->find(key);
     if (it == node->end()) return nullptr;
     node = &*it;
@@ -61,11 +77,7 @@ double FieldReader::non_negative(const std::string& path) const {
 
 double FieldReader::in_range(const std::string& path, double lo, double hi) const {
   const double v = number(path);
-  if (!(v > lo && v < hi)) {
-    std::ostringstream s;
-    s << "must be in (" << lo << ", " << hi << "), got " << v;
-    fail(path, s.str());
-  }
+  if (!(v > lo && v < hi)) fail(path, "must be in (" + shown(lo) + ", " + shown(hi) + "), got " + shown(v));
   return v;
 }
 
@@ -95,4 +107,41 @@ std::vector<double> FieldReader::numbers(const std::string& path, std::size_t mi
   return out;
 }
 
-}  // namespace rbcal::surrogate
+double FieldReader::number_or(const std::string& path, double fallback, double lo, double hi) const {
+  const nlohmann::json* n = find(path);
+  if (!n) return fallback;
+  if (!n->is_number()) fail(path, "must be a number");
+  const double v = n->get<double>();
+  if (!(v >= lo && v <= hi)) fail(path, "must be in [" + shown(lo) + ", " + shown(hi) + "], got " + shown(v));
+  return v;
+}
+
+int FieldReader::integer_or(const std::string& path, int fallback, int lo, int hi) const {
+  const nlohmann::json* n = find(path);
+  if (!n) return fallback;
+  if (!n->is_number_integer()) fail(path, "must be an integer");
+  const long long v = n->get<long long>();
+  if (v < lo || v > hi) fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<int>(v);
+}
+
+std::string FieldReader::text_or(const std::string& path, const std::string& fallback) const {
+  const nlohmann::json* n = find(path);
+  if (!n) return fallback;
+  if (!n->is_string()) fail(path, "must be a string");
+  return n->get<std::string>();
+}
+
+std::vector<double> FieldReader::fixed_numbers(const nlohmann::json& n, const std::string& path,
+                                               std::size_t size) const {
+  const std::string what = "must be an array of " + std::to_string(size) + " numbers";
+  if (!n.is_array() || n.size() != size) fail(path, what);
+  std::vector<double> out;
+  for (const auto& e : n) {
+    if (!e.is_number() || !std::isfinite(e.get<double>())) fail(path, what);
+    out.push_back(e.get<double>());
+  }
+  return out;
+}
+
+}  // namespace rbcal::formats

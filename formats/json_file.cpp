@@ -1,0 +1,51 @@
+#include "formats/json_file.hpp"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "formats/format_error.hpp"
+
+namespace rbcal::formats {
+
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw FormatError(file.string(), "cannot open");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.what() carries "parse error at line L, column C: ..."; e.byte the offset.
+    throw FormatError(file.string(), "invalid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& file, const std::string& contents) {
+  // The process id keeps two writers of one file (two sweep workers) off each other's
+  // temporary file.
+  const std::filesystem::path temp = file.string() + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(temp, std::ios::binary);
+    if (!out) throw std::runtime_error(file.string() + ": cannot write (" + temp.string() + ")");
+    out << contents;
+    out.flush();
+    if (!out) throw std::runtime_error(file.string() + ": error while writing (" + temp.string() + ")");
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, file, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    std::filesystem::remove(temp, ec);
+    throw std::runtime_error(file.string() + ": cannot replace: " + why);
+  }
+}
+
+void write_json_atomically(const std::filesystem::path& file, const nlohmann::json& j) {
+  write_file_atomically(file, j.dump(2) + "\n");
+}
+
+}  // namespace rbcal::formats

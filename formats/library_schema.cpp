@@ -1,0 +1,65 @@
+#include "formats/library_schema.hpp"
+
+#include <sstream>
+
+#include "formats/field_reader.hpp"
+
+namespace rbcal::formats {
+
+std::string case_id(double phi, double capillary_number, double viscosity_ratio) {
+  auto shown = [](double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+  };
+  return "phi" + shown(phi) + "_Ca" + shown(capillary_number) + "_lambda" + shown(viscosity_ratio);
+}
+
+const std::vector<SignatureField>& numerics_signature_fields() {
+  using nlohmann::json;
+  static const std::vector<SignatureField> fields = {
+      {"numerics.N_a", std::nullopt},
+      {"numerics.box", std::nullopt},
+      {"numerics.tau_out", std::nullopt},
+      {"numerics.kernel", std::nullopt},
+      // Case results written before these fields existed were run with RK4, the inside
+      // fraction rebuilt every step, the membrane updated every step and no volume penalty.
+      {"numerics.integrator", json("rk4")},
+      {"numerics.indicator_tolerance", json(0.0)},
+      {"numerics.coupling_interval", json(1)},
+      {"numerics.volume_stiffness", json(0.0)},
+      {"cells.triangles", std::nullopt},
+      {"cells.shape", std::nullopt},
+      {"cells.law", std::nullopt},
+      // The only profile before the field existed; C and the bending modulus compare as
+      // absent (null) against absent only.
+      {"cells.profile", json("evans-fung")},
+      {"cells.skalak_c", json(nullptr)},
+      {"run.window", std::nullopt},
+      {"params.kb_hat", json(nullptr)},
+  };
+  return fields;
+}
+
+nlohmann::json numerics_signature(const nlohmann::json& case_file, const std::string& source) {
+  const FieldReader r(case_file, source);
+  nlohmann::json signature = nlohmann::json::object();
+  for (const SignatureField& f : numerics_signature_fields()) {
+    const nlohmann::json* node = r.find(f.path);
+    if (!node && !f.absent) r.fail(f.path, "missing");
+    signature[f.path] = node ? *node : *f.absent;
+  }
+  return signature;
+}
+
+std::optional<std::string> first_signature_difference(const nlohmann::json& a, const nlohmann::json& b) {
+  for (const SignatureField& f : numerics_signature_fields()) {
+    const auto ia = a.find(f.path), ib = b.find(f.path);
+    const bool has_a = ia != a.end(), has_b = ib != b.end();
+    if (has_a != has_b || (has_a && *ia != *ib)) return std::string(f.path);
+  }
+  return std::nullopt;
+}
+
+}  // namespace rbcal::formats

@@ -1,0 +1,33 @@
+#pragma once
+// The parameter grid of a library's plan (LIB/plan.json, schema "rbcal.plan/1"):
+//   {"schema": "rbcal.plan/1", "grid": {"phi": [...], "Ca": [...], "lambda": [...]}, ...}
+// The other keys (description, base case, max_shear_modulus_lattice) belong to the
+// sweep that runs the plan (solver/sweep/sweep_plan.hpp). Each axis is a non-empty array
+// of distinct numbers within the bounds below, the same bounds a case file's params obey.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rbcal::formats {
+
+struct AxisBounds {
+  double lo, hi;  // closed
+};
+inline constexpr AxisBounds kPhiBounds{1e-4, 0.7};               // volume fraction
+inline constexpr AxisBounds kCapillaryNumberBounds{1e-6, 1e3};   // Ca
+inline constexpr AxisBounds kViscosityRatioBounds{1e-3, 1e3};    // lambda
+
+struct ParameterGrid {
+  std::vector<double> phi;               // volume fractions
+  std::vector<double> capillary_number;  // Ca
+  std::vector<double> viscosity_ratio;   // lambda
+  std::size_t size() const { return phi.size() * capillary_number.size() * viscosity_ratio.size(); }
+};
+
+// Checks the top level (an object of schema "rbcal.plan/1") and the grid; FormatError
+// names the source and the field.
+ParameterGrid plan_grid_from_json(const nlohmann::json& plan, const std::string& source);
+ParameterGrid read_plan_grid(const std::filesystem::path& plan_file);
+
+}  // namespace rbcal::formats
