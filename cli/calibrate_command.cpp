@@ -22,6 +22,7 @@
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "surrogate/surrogate_file.hpp"
 
 namespace rbcal::cli {
@@ -35,8 +36,8 @@ constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 struct CalibrateOptions {
-  std::string data = RBCAL_DATA_DIR "/samples/default.csv";
-  std::string surrogate = RBCAL_DATA_DIR "/library/default/surrogate.json";
+  std::string data = shipped_file("samples/default.csv");
+  std::string surrogate = shipped_file("library/default/surrogate.json");
   std::string method = "all";
   std::vector<std::string> samples;  // empty: every sample
   double lambda = 5.0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
 #include "solver/membrane/cell_stretching.hpp"
@@ -29,7 +30,7 @@ struct StretchOptions {
   double skalak_c = 100.0;
   double bending_modulus = 5e-19;  // J
   double contact_fraction = 0.05;
-  std::string compare_path = std::string(RBCAL_DATA_DIR) + "/reference/mills_2004_optical_tweezers.csv";
+  std::string compare_path = shipped_file("reference/mills_2004_optical_tweezers.csv");
   bool no_compare = false;
   bool fit = false;
   std::string json_path;
