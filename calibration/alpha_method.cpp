@@ -96,7 +96,7 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
     model_phi.push_back(phi_lo + (phi_hi - phi_lo) * i / std::max(1, options.model_phi_points - 1));
   auto model_alpha = [&](double ca) {
     std::vector<double> eta_re;
-    for (double phi : model_phi) eta_re.push_back(model.predict(phi, ca, options.lambda).eta_re);
+    for (double phi : model_phi) eta_re.push_back(model.predict(phi, ca, options.setup.lambda).eta_re);
     return fit_exponential_alpha(model_phi, eta_re, options.fit_space);
   };
   std::vector<double> ln_ca, alpha_of_ln_ca;
@@ -122,7 +122,7 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
       match.matched = true;
       match.capillary_number = std::exp(x);
       match.shear_modulus =
-          shear_modulus_from_capillary_number(eta0, m.shear_rate, options.cell_radius, match.capillary_number);
+          shear_modulus_from_capillary_number(eta0, m.shear_rate, options.setup.cell_radius, match.capillary_number);
     }
     result.per_shear_rate.push_back(match);
   }
@@ -150,7 +150,7 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
     if (pick_crossing(level_crossings(ln_rate, measured_alpha, match.alpha), why.str(), &x, &match.message)) {
       match.matched = true;
       match.shear_rate = std::exp(x);
-      match.shear_modulus = shear_modulus_from_capillary_number(eta0, match.shear_rate, options.cell_radius, ca);
+      match.shear_modulus = shear_modulus_from_capillary_number(eta0, match.shear_rate, options.setup.cell_radius, ca);
     }
     result.per_capillary_number.push_back(match);
   }

@@ -6,15 +6,14 @@
 #include <vector>
 
 #include "calibration/calibration_input.hpp"
-#include "calibration/capillary_number.hpp"
+#include "calibration/model_setup.hpp"
 #include "calibration/exponential_alpha_fit.hpp"
 #include "surrogate/viscosity_model.hpp"
 
 namespace rbcal::calibration {
 
 struct AlphaMethodOptions {
-  double cell_radius = kDefaultCellRadius;  // a [m]
-  double lambda = 5.0;                      // viscosity ratio at which the model is evaluated
+  ModelSetup setup;  // a, and the lambda at which the model is evaluated (fit_lambda unused)
   double phi_min = 0.0;                     // measured points with phi_min <= phi <= phi_max are fitted
   double phi_max = 1.0;                     // the seed study used phi <= 0.4 for hardened cells
   AlphaFitSpace fit_space = AlphaFitSpace::linear;

@@ -34,6 +34,9 @@ struct SampleReport {
 
   // The point-wise fit used for fits.csv: the direct fit, else the MCMC's start fit, else none.
   const DirectFitResult* point_fit() const;
+  // A few lines per method: G_s with its interval, MCMC diagnostics, warnings
+  // (calibration/brief_reports.cpp).
+  std::string brief_report() const;
 };
 
 // G_s ratio of two samples (numerator / denominator) from their posterior draws.
@@ -41,6 +44,7 @@ struct SampleComparisonReport {
   std::string numerator;
   std::string denominator;
   ShearModulusRatio ratio;
+  std::string brief_report() const;  // the ratio, its interval and P(numerator > denominator)
 };
 
 // Where the numbers came from, recorded in summary.json with rbcal's version and git revision.
@@ -71,6 +75,7 @@ struct ReportFiles {
   std::vector<std::filesystem::path> files;  // everything written, summary.json last
   bool plots_written = false;
   std::string plots_message;  // why plots were skipped or failed; empty when written
+  std::string brief_report(bool plots_requested) const;  // where the report went
 };
 
 // Creates the folder (and parents) if needed, writes tables, plots, then summary.json (which

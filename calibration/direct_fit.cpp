@@ -128,23 +128,23 @@ bool laplace_covariance(ceres::Problem& problem, const std::vector<double*>& fre
 
 DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
                            const DirectFitOptions& options) {
-  const ViscosityObservation obs{&model, sample.plasma.eta0, options.cell_radius};
+  const ViscosityObservation obs{&model, sample.plasma.eta0, options.setup.cell_radius};
   const surrogate::ParameterRange range = model.range();
   const bool fit_eta0 = options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample);
   DirectFitResult result;
   result.plasma_viscosity_fitted = fit_eta0;
   result.parameter_names = {"ln_G_s"};
-  if (options.fit_lambda) result.parameter_names.push_back("ln_lambda");
+  if (options.setup.fit_lambda) result.parameter_names.push_back("ln_lambda");
   if (fit_eta0) result.parameter_names.push_back("ln_eta0");
   const int parameters = static_cast<int>(result.parameter_names.size());
-  const int fitted_to_data = options.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
+  const int fitted_to_data = options.setup.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
 
   FitParameters x;
   x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
-  x.ln_lambda = std::log(options.lambda);
+  x.ln_lambda = std::log(options.setup.lambda);
   const double ln_lambda_lo = std::log(std::max(range.lambda_min, 1e-300));
   const double ln_lambda_hi = std::log(std::max(range.lambda_max, 1e-300));
-  if (options.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
+  if (options.setup.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
   std::vector<WeightedResidual> residuals;
   for (const auto& p : sample.points) residuals.push_back({obs, p, fit_eta0});
   x.ln_shear_modulus = scan_start(residuals, obs, sample.points, options, x);
@@ -170,7 +170,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     std::vector<double*> free_blocks = {&x.ln_shear_modulus};
     problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, ln_gs_lo);
     problem.SetParameterUpperBound(&x.ln_shear_modulus, 0, ln_gs_hi);
-    if (options.fit_lambda) {
+    if (options.setup.fit_lambda) {
       problem.SetParameterLowerBound(&x.ln_lambda, 0, ln_lambda_lo);
       problem.SetParameterUpperBound(&x.ln_lambda, 0, ln_lambda_hi);
       free_blocks.push_back(&x.ln_lambda);
@@ -216,7 +216,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
 
   result.estimate.resize(parameters);
   result.estimate(0) = x.ln_shear_modulus;
-  if (options.fit_lambda) result.estimate(1) = x.ln_lambda;
+  if (options.setup.fit_lambda) result.estimate(1) = x.ln_lambda;
   if (fit_eta0) result.estimate(parameters - 1) = x.ln_plasma_viscosity;
   result.shear_modulus = std::exp(x.ln_shear_modulus);
   result.lambda = std::exp(x.ln_lambda);
@@ -224,7 +224,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   const double bound_tolerance = 1e-6;
   result.at_bound =
       x.ln_shear_modulus - ln_gs_lo < bound_tolerance || ln_gs_hi - x.ln_shear_modulus < bound_tolerance ||
-      (options.fit_lambda &&
+      (options.setup.fit_lambda &&
        (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance));
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
@@ -262,7 +262,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   result.shear_modulus_interval = {std::exp(x.ln_shear_modulus - z * result.ln_shear_modulus_sd),
                                    std::exp(x.ln_shear_modulus + z * result.ln_shear_modulus_sd),
                                    options.interval_level};
-  if (options.fit_lambda) {
+  if (options.setup.fit_lambda) {
     const double sd = std::sqrt(result.covariance(1, 1));
     result.lambda_interval = {std::exp(x.ln_lambda - z * sd), std::exp(x.ln_lambda + z * sd), options.interval_level};
   } else {

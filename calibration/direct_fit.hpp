@@ -10,7 +10,7 @@
 #include <Eigen/Dense>
 
 #include "calibration/calibration_input.hpp"
-#include "calibration/capillary_number.hpp"
+#include "calibration/model_setup.hpp"
 #include "calibration/quantiles.hpp"
 #include "surrogate/viscosity_model.hpp"
 
@@ -19,9 +19,7 @@ namespace rbcal::calibration {
 enum class RobustLoss { none, huber, cauchy };
 
 struct DirectFitOptions {
-  double cell_radius = kDefaultCellRadius;  // a [m]
-  double lambda = 5.0;                      // fixed viscosity ratio, or the start when fit_lambda
-  bool fit_lambda = false;
+  ModelSetup setup;  // a, lambda (fixed, or the start when fit_lambda)
   // Fit ln eta0 with its plateau prior when the sample allows it (plasma standard error > 0 and
   // absolute viscosities on every point); otherwise eta0 is fixed and its error is in eta_re_sd.
   bool plasma_viscosity_as_parameter = true;

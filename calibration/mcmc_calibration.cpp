@@ -22,9 +22,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   out.plasma_viscosity = sample.plasma.eta0;
   out.plasma_viscosity_standard_error = sample.plasma.standard_error;
   DirectFitOptions fit_options = options.start_fit;
-  fit_options.cell_radius = options.posterior.cell_radius;
-  fit_options.lambda = options.posterior.lambda;
-  fit_options.fit_lambda = options.posterior.fit_lambda;
+  fit_options.setup = options.posterior.setup;
   fit_options.plasma_viscosity_as_parameter = options.posterior.plasma_viscosity_as_parameter;
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
@@ -67,7 +65,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
     out.lambda_median = std::exp(summaries[posterior.lambda_index()].median);
     out.lambda_interval = exp_interval(summaries[posterior.lambda_index()].interval);
   } else {
-    out.lambda_median = options.posterior.lambda;
+    out.lambda_median = options.posterior.setup.lambda;
     out.lambda_interval = {out.lambda_median, out.lambda_median, options.sampler.interval_level};
   }
   if (posterior.discrepancy_index() >= 0) {

@@ -10,7 +10,7 @@ namespace rbcal::calibration {
 LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma_viscosity,
                            std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options,
                            double plasma_viscosity_standard_error)
-    : observation_{&model, plasma_viscosity, options.cell_radius},
+    : observation_{&model, plasma_viscosity, options.setup.cell_radius},
       points_(std::move(points)),
       options_(options),
       plasma_viscosity_standard_error_(plasma_viscosity_standard_error) {
@@ -18,7 +18,7 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
   if (!(options_.shear_modulus_min > 0.0 && options_.shear_modulus_max > options_.shear_modulus_min))
     throw std::invalid_argument("posterior: need 0 < shear_modulus_min < shear_modulus_max");
   names_ = {"ln_G_s"};
-  if (options_.fit_lambda) {
+  if (options_.setup.fit_lambda) {
     const surrogate::ParameterRange range = model.range();
     if (options_.lambda_min <= 0.0) options_.lambda_min = range.lambda_min;
     if (options_.lambda_max <= 0.0) options_.lambda_max = range.lambda_max;
@@ -46,7 +46,7 @@ double LogPosterior::plasma_viscosity(const Eigen::VectorXd& theta) const {
 }
 
 double LogPosterior::lambda(const Eigen::VectorXd& theta) const {
-  return lambda_index_ >= 0 ? std::exp(theta(lambda_index_)) : options_.lambda;
+  return lambda_index_ >= 0 ? std::exp(theta(lambda_index_)) : options_.setup.lambda;
 }
 
 double LogPosterior::discrepancy(const Eigen::VectorXd& theta) const {

@@ -19,15 +19,14 @@
 #include <Eigen/Dense>
 
 #include "calibration/calibration_input.hpp"
+#include "calibration/model_setup.hpp"
 #include "calibration/viscosity_observation.hpp"
 #include "surrogate/viscosity_model.hpp"
 
 namespace rbcal::calibration {
 
 struct PosteriorOptions {
-  double cell_radius = kDefaultCellRadius;  // a [m]
-  double lambda = 5.0;                      // fixed viscosity ratio when not fitted
-  bool fit_lambda = false;
+  ModelSetup setup;  // a, lambda (fixed when not fitted)
   bool fit_discrepancy = false;       // add ln sigma_d
   double shear_modulus_min = 1e-8;    // prior range of G_s [N/m]
   double shear_modulus_max = 1e-3;

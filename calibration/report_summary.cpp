@@ -95,11 +95,11 @@ json mcmc_json(const McmcCalibration& m) {
             {"G_s_statistic", "posterior median"},
             {"interval_uN_per_m", interval_json(m.shear_modulus_interval, kMicro)},
             {"lambda", m.lambda_median},
-            {"lambda_fitted", m.posterior.fit_lambda},
+            {"lambda_fitted", m.posterior.setup.fit_lambda},
             {"eta0_mPa_s", kMilli * m.plasma_viscosity_median},
             {"eta0_interval_mPa_s", interval_json(m.plasma_viscosity_interval, kMilli)},
             {"points_in_likelihood", m.points.size()}};
-  if (m.posterior.fit_lambda) j["lambda_interval"] = interval_json(m.lambda_interval, 1.0);
+  if (m.posterior.setup.fit_lambda) j["lambda_interval"] = interval_json(m.lambda_interval, 1.0);
   if (m.posterior.fit_discrepancy) {
     j["sigma_d"] = m.discrepancy_median;
     j["sigma_d_interval"] = interval_json(m.discrepancy_interval, 1.0);

@@ -25,7 +25,7 @@ int main() {
   using clock = std::chrono::steady_clock;
   for (bool fit_lambda : {false, true}) {
     DirectFitOptions fit_options;
-    fit_options.fit_lambda = fit_lambda;
+    fit_options.setup.fit_lambda = fit_lambda;
     // Median of 21 repeats (the first call also pays for warm-up).
     std::vector<double> map_times;
     DirectFitResult fit;
@@ -40,7 +40,7 @@ int main() {
                 fit.parameter_names.size(), map_seconds, fit.shear_modulus, fit.shear_modulus_interval.lower,
                 fit.shear_modulus_interval.upper);
     McmcCalibrationOptions options;
-    options.posterior.fit_lambda = fit_lambda;
+    options.posterior.setup.fit_lambda = fit_lambda;
     options.posterior.fit_discrepancy = true;
     const auto t1 = clock::now();
     const McmcCalibration mcmc = calibrate_mcmc(sample, model, options);

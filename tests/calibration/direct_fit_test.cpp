@@ -71,8 +71,8 @@ TEST(DirectFit, FitsLambdaWhenTheModelCanTellItApart) {
   std::mt19937_64 rng(5);
   const SampleData sample = test_models::synthetic_sample(model, design, rng);
   DirectFitOptions options;
-  options.fit_lambda = true;
-  options.lambda = 1.0;  // start away from the truth
+  options.setup.fit_lambda = true;
+  options.setup.lambda = 1.0;  // start away from the truth
   const DirectFitResult fit = fit_direct(sample, model, options);
   ASSERT_EQ(fit.parameter_names.size(), 2u);
   ASSERT_TRUE(fit.covariance_ok);
@@ -145,7 +145,7 @@ TEST(DirectFit, LaplaceIntervalsCoverWithLambdaFitted) {
   model.c3 = 1.0;
   test_models::SyntheticDesign design;
   DirectFitOptions options;
-  options.fit_lambda = true;
+  options.setup.fit_lambda = true;
   constexpr int kReplications = 200;
   std::mt19937_64 rng(777);
   int covered_g = 0, covered_l = 0;

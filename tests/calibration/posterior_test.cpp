@@ -46,7 +46,7 @@ TEST(Posterior, LikelihoodAddsMeasurementModelAndDiscrepancyVariances) {
 TEST(Posterior, PriorsAreNormalisedAndBounded) {
   AnalyticViscosityModel model;
   PosteriorOptions options;
-  options.fit_lambda = true;
+  options.setup.fit_lambda = true;
   options.fit_discrepancy = true;
   const LogPosterior posterior(model, 1.5e-3, {point(0.2, 10.0, 1.8, 0.05)}, options);
   ASSERT_EQ(posterior.lambda_index(), 1);

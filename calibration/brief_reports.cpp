@@ -1,0 +1,82 @@
+// The brief text reports of the calibration's result types (what `rbcal calibrate`
+// prints), in SI internally and uN/m, mPa s on screen.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "calibration/calibration_report.hpp"
+
+namespace rbcal::calibration {
+
+namespace {
+
+constexpr double kMicro = 1e6;  // N/m -> uN/m
+constexpr double kMilli = 1e3;  // Pa s -> mPa s
+
+template <class... Args>
+std::string format(const char* pattern, Args... args) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, pattern, args...);
+  return buffer;
+}
+
+std::string interval_text(const Interval& i, double scale) {
+  return format("%.0f", 100 * i.level) + " % [" + format("%.4g", scale * i.lower) + ", " +
+         format("%.4g", scale * i.upper) + "]";
+}
+
+}  // namespace
+
+std::string SampleReport::brief_report() const {
+  const SampleData& s = sample;
+  std::string out = format("sample %s: %zu points, eta0 = %.4g +- %.2g mPa s (%d plateau rows)\n", s.name.c_str(),
+                           s.points.size(), kMilli * s.plasma.eta0, kMilli * s.plasma.standard_error,
+                           s.plasma.plateau_rows);
+  if (alpha) {
+    const auto& g = alpha->shear_modulus;
+    if (g.count > 0)
+      out += format("  G_s alpha   %.4g uN/m  95 %% [%.4g, %.4g] (mean +- 1.96 se over %d shear rates)\n",
+                    kMicro * g.mean, kMicro * (g.mean - 1.96 * g.standard_error),
+                    kMicro * (g.mean + 1.96 * g.standard_error), g.count);
+    else
+      out += "  G_s alpha   none: no shear rate matched\n";
+  }
+  if (direct) {
+    const auto& d = *direct;
+    const auto used = std::count_if(d.points.begin(), d.points.end(), [](const auto& f) { return f.used; });
+    out += format("  G_s direct  %.4g uN/m  %s (Laplace, %ld points, chi^2/dof %.3g)\n", kMicro * d.shear_modulus,
+                  interval_text(d.shear_modulus_interval, kMicro).c_str(), static_cast<long>(used),
+                  d.degrees_of_freedom > 0 ? d.chi_square / d.degrees_of_freedom : 0.0);
+    if (std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end())
+      out += format("  lambda direct %.4g  %s\n", d.lambda, interval_text(d.lambda_interval, 1.0).c_str());
+  }
+  if (mcmc) {
+    const auto& m = *mcmc;
+    out += format("  G_s mcmc    %.4g uN/m  %s (posterior median)\n", kMicro * m.shear_modulus_median,
+                  interval_text(m.shear_modulus_interval, kMicro).c_str());
+    if (m.posterior.setup.fit_lambda)
+      out += format("  lambda mcmc %.4g  %s\n", m.lambda_median, interval_text(m.lambda_interval, 1.0).c_str());
+    const auto& mc = m.mcmc;
+    const auto& p = mc.parameters.front();
+    out += format("  MCMC        R-hat %.4f, ESS %.0f, tau %.3g, acceptance %.2f, %d steps x %zu chains x %d walkers, %s\n",
+                  p.rhat, p.bulk_ess, p.autocorrelation_time, mc.acceptance_fraction, mc.steps, mc.chains.size(),
+                  mc.chains.empty() ? 0 : mc.chains.front().walkers(), mc.converged ? "converged" : "NOT converged");
+  }
+  for (const auto& w : warnings) out += "  warning: " + w + "\n";
+  return out;
+}
+
+std::string SampleComparisonReport::brief_report() const {
+  return format("G_s ratio %s / %s: %.4g  %s, P(%s > %s) = %.3f\n", numerator.c_str(), denominator.c_str(),
+                ratio.median, interval_text(ratio.interval, 1.0).c_str(), numerator.c_str(), denominator.c_str(),
+                ratio.probability_greater_than_one);
+}
+
+std::string ReportFiles::brief_report(bool plots_requested) const {
+  std::string out = format("report: %s (%zu files)%s\n", folder.string().c_str(), files.size(),
+                           plots_written ? ", plots as PNG and SVG" : "");
+  if (!plots_written && plots_requested) out += "warning: " + plots_message + "\n";
+  return out;
+}
+
+}  // namespace rbcal::calibration

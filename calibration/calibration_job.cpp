@@ -1,0 +1,239 @@
+#include "calibration/calibration_job.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "calibration/alpha_method.hpp"
+#include "calibration/direct_fit.hpp"
+#include "calibration/mcmc_calibration.hpp"
+#include "calibration/predictive_bands.hpp"
+#include "calibration/sample_comparison.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace rbcal::calibration {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string shown(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.4g", x);
+  return buffer;
+}
+
+std::optional<std::pair<std::string, std::string>> compared_samples(const std::string& compare) {
+  if (compare.empty()) return std::nullopt;
+  const auto slash = compare.find('/');
+  if (slash == std::string::npos || slash == 0 || slash + 1 == compare.size()) return std::nullopt;
+  return std::make_pair(compare.substr(0, slash), compare.substr(slash + 1));
+}
+
+// Each method of one sample; a method that throws becomes a warning.
+class SampleCalibration {
+ public:
+  SampleCalibration(const surrogate::ViscosityModel& model, const CalibrationJobOptions& o) : model_(model), o_(o) {}
+
+  SampleReport run(SampleData sample) const {
+    SampleReport r;
+    const std::size_t all_points = sample.points.size();
+    std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) { return p.phi > o_.phi_max; });
+    if (sample.points.size() < all_points)
+      r.warnings.push_back(std::to_string(all_points - sample.points.size()) + " points with phi > " +
+                           shown(o_.phi_max) + " left out (--phi-max)");
+    r.sample = sample;
+    if (o_.runs("alpha")) alpha(r);
+    if (o_.runs("direct")) direct(r);
+    if (o_.runs("mcmc")) mcmc(r);
+    points_left_out(r);
+    return r;
+  }
+
+ private:
+  DirectFitOptions fit_options() const {
+    DirectFitOptions fo;
+    fo.setup = o_.setup;
+    return fo;
+  }
+
+  void alpha(SampleReport& r) const {
+    AlphaMethodOptions ao;
+    ao.setup = o_.setup;
+    ao.phi_max = o_.phi_max;
+    try {
+      r.alpha = estimate_by_alpha_matching(r.sample, model_, ao);
+      int unmatched = 0;
+      for (const auto& m : r.alpha->per_shear_rate) unmatched += m.matched ? 0 : 1;
+      if (unmatched > 0)
+        r.warnings.push_back("alpha: " + std::to_string(unmatched) + " of " +
+                             std::to_string(r.alpha->per_shear_rate.size()) +
+                             " shear rates not matched to a Ca of the surrogate (see summary.json)");
+    } catch (const std::exception& e) {
+      r.warnings.push_back(std::string("alpha method failed: ") + e.what());
+    }
+  }
+
+  void direct(SampleReport& r) const {
+    try {
+      r.direct = fit_direct(r.sample, model_, fit_options());
+      if (!r.direct->converged) r.warnings.push_back("direct fit: Ceres did not converge");
+      if (!r.direct->covariance_ok) r.warnings.push_back("direct fit: covariance rank deficient, no interval");
+      if (r.direct->at_bound) r.warnings.push_back("direct fit: an estimate sits on a bound, interval unreliable");
+    } catch (const std::exception& e) {
+      r.warnings.push_back(std::string("direct fit failed: ") + e.what());
+    }
+  }
+
+  void mcmc(SampleReport& r) const {
+    McmcCalibrationOptions mo;
+    mo.posterior.setup = o_.setup;
+    mo.start_fit = fit_options();
+    mo.sampler = o_.sampler;
+    mo.sampler.min_steps = std::min(mo.sampler.min_steps, o_.sampler.max_steps);
+    try {
+      r.mcmc = calibrate_mcmc(r.sample, model_, mo);
+      if (!r.mcmc->mcmc.converged) r.warnings.push_back("MCMC not converged: " + r.mcmc->mcmc.stop_reason);
+      PredictiveBandOptions bo;
+      bo.seed = o_.sampler.seed + 1;
+      r.band_level = bo.level;
+      r.bands = predictive_bands(model_, *r.mcmc, bo);
+    } catch (const std::exception& e) {
+      r.warnings.push_back(std::string("MCMC failed: ") + e.what());
+    }
+  }
+
+  // Points the fit left out (mostly outside the surrogate's range), counted once.
+  void points_left_out(SampleReport& r) const {
+    const DirectFitResult* fit = r.point_fit();
+    if (!fit) return;
+    int skipped = 0;
+    std::string first;
+    for (const auto& f : fit->points)
+      if (!f.used && skipped++ == 0) first = "line " + std::to_string(f.point.line) + ": " + f.reason;
+    if (skipped == 0) return;
+    const surrogate::ParameterRange range = model_.range();
+    std::ostringstream w;
+    w << skipped << " of " << fit->points.size() << " points not fitted (surrogate range phi " << range.phi_min
+      << " .. " << range.phi_max << ", Ca " << range.ca_min << " .. " << range.ca_max << "); first: " << first;
+    r.warnings.push_back(w.str());
+  }
+
+  const surrogate::ViscosityModel& model_;
+  const CalibrationJobOptions& o_;
+};
+
+const SampleReport& report_of(const CalibrationReport& report, const std::string& name) {
+  for (const auto& r : report.samples)
+    if (r.sample.name == name) return r;
+  throw std::logic_error("sample " + name + " not calibrated");
+}
+
+}  // namespace
+
+std::string CalibrationJobOptions::invalid_reason() const {
+  if (method != "all" && method != "alpha" && method != "direct" && method != "mcmc")
+    return "--method " + method + ": expected alpha, direct, mcmc or all";
+  if (const std::string why = setup.invalid_reason(); !why.empty()) return why;
+  if (!(phi_max > 0.0 && phi_max <= 1.0)) return "--phi-max must lie in (0, 1]";
+  if (!(plasma.plateau_min_shear_rate >= 0.0)) return "--plateau-min-shear-rate must be >= 0";
+  if (sampler.chains < 1 || sampler.walkers < 2 || sampler.max_steps < 1)
+    return "MCMC needs at least one chain, two walkers and one step";
+  if (!compare.empty()) {
+    if (!compared_samples(compare)) return "--compare " + compare + ": expected NUMERATOR/DENOMINATOR sample names";
+    if (!runs("mcmc")) return "--compare needs the mcmc method (--method mcmc or all)";
+  }
+  return "";
+}
+
+nlohmann::json CalibrationJobOptions::to_json() const {
+  return {{"method", method},
+          {"samples", samples},
+          {"lambda", setup.lambda},
+          {"fit_lambda", setup.fit_lambda},
+          {"cell_radius_um", setup.cell_radius * 1e6},
+          {"plateau_min_shear_rate_per_s", plasma.plateau_min_shear_rate},
+          {"phi_max", phi_max},
+          {"seed", sampler.seed},
+          {"threads", sampler.threads},
+          {"compare", compare},
+          {"mcmc_max_steps", sampler.max_steps},
+          {"chains", sampler.chains},
+          {"walkers", sampler.walkers},
+          {"plots", report.plots}};
+}
+
+CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
+                                    const CalibrationJobOptions& o, std::ostream& log) {
+  std::vector<std::string> names = o.samples;
+  if (names.empty())
+    for (const auto& s : input.samples) names.push_back(s.name);
+  const auto compare = compared_samples(o.compare);
+  if (compare)
+    for (const std::string& n : {compare->first, compare->second})
+      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  std::vector<const SampleData*> selected;
+  for (const auto& n : names) {
+    try {
+      selected.push_back(&input.sample(n));
+    } catch (const std::out_of_range& e) {
+      throw std::invalid_argument(e.what());  // names the file and the known samples
+    }
+  }
+  log << "rbcal calibrate: " << o.data_file.string() << " (" << selected.size() << " of " << input.samples.size()
+      << " samples), surrogate " << o.surrogate_file.string() << ", method " << o.method << ", lambda "
+      << (o.setup.fit_lambda ? std::string("fitted") : shown(o.setup.lambda)) << "\n";
+
+  CalibrationReport report;
+  report.cell_radius = o.setup.cell_radius;
+  report.provenance = {o.data_file.string(), o.surrogate_file.string(), o.command_line, o.to_json(), o.sampler.seed};
+  const SampleCalibration calibrate(model, o);
+  for (const SampleData* s : selected) {
+    report.samples.push_back(calibrate.run(*s));
+    log << report.samples.back().brief_report() << std::flush;
+  }
+  if (compare) {
+    const SampleReport& num = report_of(report, compare->first);
+    const SampleReport& den = report_of(report, compare->second);
+    if (!num.mcmc || !den.mcmc) {
+      log << "warning: --compare " << o.compare << " skipped: MCMC failed for a sample\n";
+    } else {
+      const ShearModulusRatio ratio = compare_shear_moduli(num.mcmc->shear_modulus_draws(),
+                                                           den.mcmc->shear_modulus_draws(), 0.95, o.sampler.seed + 2);
+      report.comparison = SampleComparisonReport{compare->first, compare->second, ratio};
+      log << report.comparison->brief_report();
+    }
+  }
+  return report;
+}
+
+CalibrationJobResult run_calibration_job(const CalibrationJobOptions& o, std::ostream& log) {
+  if (const std::string why = o.invalid_reason(); !why.empty()) throw std::invalid_argument(why);
+  if (!fs::exists(o.data_file))
+    throw std::invalid_argument("data file " + o.data_file.string() +
+           " not found; give a rheometer CSV (sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n) as "
+           "`rbcal calibrate DATA.csv`");
+  if (!fs::exists(o.surrogate_file))
+    throw std::invalid_argument("surrogate file " + o.surrogate_file.string() +
+           " not found; build one with `rbcal surrogate build LIBRARY -o FILE` and pass --surrogate FILE");
+  const CalibrationInput input = read_calibration_input(o.data_file, o.plasma);
+  // Samples are checked before the surrogate is loaded: a typo in --sample fails at once.
+  for (const std::string& n : o.samples) {
+    try {
+      input.sample(n);
+    } catch (const std::out_of_range& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }
+  const surrogate::ViscositySurrogate model = surrogate::load_surrogate(o.surrogate_file);
+  CalibrationJobResult out;
+  out.report = calibrate_samples(input, model, o, log);
+  out.files = write_calibration_report(out.report, o.report_folder, o.report);
+  log << out.files.brief_report(o.report.plots);
+  return out;
+}
+
+}  // namespace rbcal::calibration

@@ -1,0 +1,61 @@
+#pragma once
+// One calibration from files to report: read a rheometer CSV, load a surrogate, run the
+// chosen methods (alpha matching, direct fit, MCMC) on each selected sample with one
+// shared ModelSetup, optionally compare two samples' G_s, and write the report folder.
+// This is the policy behind `rbcal calibrate`: which methods run, which points enter
+// (phi_max), how a failing method becomes a warning instead of an error, and how the
+// options reach each method. Progress and brief reports go to a stream as they come.
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "calibration/calibration_input.hpp"
+#include "calibration/calibration_report.hpp"
+#include "calibration/mcmc_sampling.hpp"
+#include "calibration/model_setup.hpp"
+#include "calibration/plasma_viscosity.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::calibration {
+
+struct CalibrationJobOptions {
+  std::filesystem::path data_file;       // rheometer CSV
+  std::filesystem::path surrogate_file;  // rbcal.surrogate/1
+  std::filesystem::path report_folder = "calibration_report";
+  std::string method = "all";            // alpha, direct, mcmc or all
+  std::vector<std::string> samples;      // empty: every sample of the file
+  ModelSetup setup;                      // a, lambda, fit_lambda: shared by the methods
+  PlasmaViscosityOptions plasma;         // which plasma rows give eta0
+  double phi_max = 1.0;                  // points above are left out
+  McmcOptions sampler;                   // seed, threads, steps, chains, walkers
+  std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
+  ReportOptions report;
+  std::string command_line;              // the equivalent command, for the provenance
+
+  // Empty when usable, else the first problem, naming the option (checked once at entry).
+  std::string invalid_reason() const;
+  bool runs(const std::string& m) const { return method == "all" || method == m; }
+  // The options as recorded in summary.json's provenance.
+  nlohmann::json to_json() const;
+};
+
+struct CalibrationJobResult {
+  CalibrationReport report;
+  ReportFiles files;
+};
+
+// Throws std::invalid_argument for invalid options, and the readers' errors (naming file,
+// line and field) for bad input files. log: the plan, each sample's brief report as it
+// finishes, the comparison, where the report went, and warnings.
+CalibrationJobResult run_calibration_job(const CalibrationJobOptions& options, std::ostream& log);
+
+// The calibration itself, on data already read and any model (no files read or written;
+// options.data_file and surrogate_file are only recorded): the selected samples, each
+// method, the comparison. Samples not in input throw std::invalid_argument.
+CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
+                                    const CalibrationJobOptions& options, std::ostream& log);
+
+}  // namespace rbcal::calibration

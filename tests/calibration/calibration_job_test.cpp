@@ -1,0 +1,102 @@
+// The calibration policy behind `rbcal calibrate` (calibration/calibration_job.hpp): options
+// are checked once with messages that name the option, only the chosen methods run, points
+// above phi_max are left out with a warning, and a method that cannot run becomes a warning
+// instead of ending the job. Data: the SYNTHETIC curves of data/synthetic_rheometer.csv,
+// written from ln eta_re = phi (2.5 - 0.4 ln Ca) (see its header), on that same law.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "analytic_viscosity_model.hpp"
+#include "calibration/calibration_job.hpp"
+
+using namespace rbcal::calibration;
+using rbcal::calibration::test_models::AnalyticViscosityModel;
+
+namespace {
+
+AnalyticViscosityModel synthetic_law() {
+  AnalyticViscosityModel m;
+  m.c0 = 2.5;
+  m.c1 = 0.4;
+  m.c2 = 0.0;
+  return m;
+}
+
+CalibrationJobOptions options(const std::string& method) {
+  CalibrationJobOptions o;
+  o.data_file = RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv";
+  o.method = method;
+  o.sampler.threads = 1;
+  return o;
+}
+
+}  // namespace
+
+TEST(CalibrationJob, ChecksItsOptionsOnceNamingTheOption) {
+  EXPECT_EQ(options("all").invalid_reason(), "");
+  EXPECT_NE(options("fit").invalid_reason().find("--method fit"), std::string::npos);
+  CalibrationJobOptions o = options("all");
+  o.compare = "intact";
+  EXPECT_NE(o.invalid_reason().find("--compare intact: expected NUMERATOR/DENOMINATOR"), std::string::npos);
+  o = options("direct");
+  o.compare = "intact/hardened";
+  EXPECT_NE(o.invalid_reason().find("--compare needs the mcmc method"), std::string::npos);
+  o = options("all");
+  o.setup.cell_radius = -1.0;
+  EXPECT_NE(o.invalid_reason().find("cell radius"), std::string::npos);
+  o = options("all");
+  o.phi_max = 0.0;
+  EXPECT_NE(o.invalid_reason().find("--phi-max"), std::string::npos);
+  std::ostringstream log;
+  o = options("all");
+  o.surrogate_file = "/nonexistent/surrogate.json";
+  try {
+    run_calibration_job(o, log);
+    FAIL() << "ran without a surrogate";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("surrogate file /nonexistent/surrogate.json not found"), std::string::npos);
+  }
+}
+
+TEST(CalibrationJob, RunsTheChosenMethodOnTheChosenPoints) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("direct");
+  o.samples = {"intact"};
+  o.phi_max = 0.25;
+  std::ostringstream log;
+  const CalibrationReport report = calibrate_samples(input, synthetic_law(), o, log);
+  ASSERT_EQ(report.samples.size(), 1u);
+  const SampleReport& r = report.samples[0];
+  EXPECT_FALSE(r.alpha);
+  EXPECT_FALSE(r.mcmc);
+  ASSERT_TRUE(r.direct);
+  for (const auto& p : r.sample.points) EXPECT_LE(p.phi, 0.25);
+  bool warned = false;
+  for (const auto& w : r.warnings) warned = warned || w.find("with phi > 0.25 left out") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // The file's header: intact G_s 0.5 uN/m. The interval must hold it.
+  EXPECT_LT(r.direct->shear_modulus_interval.lower, 0.5e-6);
+  EXPECT_GT(r.direct->shear_modulus_interval.upper, 0.5e-6);
+  EXPECT_NE(log.str().find("sample intact:"), std::string::npos) << log.str();
+  EXPECT_NE(log.str().find("G_s direct"), std::string::npos) << log.str();
+  EXPECT_EQ(report.provenance.options["phi_max"], 0.25);
+
+  o.samples = {"nobody"};
+  EXPECT_THROW(calibrate_samples(input, synthetic_law(), o, log), std::invalid_argument);
+}
+
+TEST(CalibrationJob, AMethodThatCannotRunBecomesAWarning) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("direct");
+  o.samples = {"hardened"};
+  AnalyticViscosityModel narrow = synthetic_law();
+  narrow.box.ca_min = 1e-12;
+  narrow.box.ca_max = 1e-9;  // no measured point inside the model's Ca range
+  std::ostringstream log;
+  const CalibrationReport report = calibrate_samples(input, narrow, o, log);
+  ASSERT_EQ(report.samples.size(), 1u);
+  EXPECT_FALSE(report.samples[0].direct);
+  ASSERT_FALSE(report.samples[0].warnings.empty());
+  EXPECT_NE(report.samples[0].warnings[0].find("direct fit failed"), std::string::npos);
+}
