@@ -3,22 +3,20 @@
 #include <omp.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "bench/coupled_step.hpp"
 #include "bench/lattice_throughput.hpp"
 #include "bench/roofline.hpp"
 #include "cli/commands.hpp"
-#include "rbcal/build_info.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
-#include "solver/simulation/shear_flow_simulation.hpp"
-#include "solver/simulation/state_guards.hpp"
+#include "rbcal/build_info.hpp"
+#include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::cli {
 
@@ -36,65 +34,14 @@ struct BenchOptions {
 };
 
 void run_case_bench(const BenchOptions& o) {
-  const solver::SimulationCase c = solver::read_case(o.case_path);
-  solver::ShearFlowSimulation sim(c);
-  // Timings of a state that is blowing up mean nothing (and NaNs run at their own speed):
-  // the solver's guards are checked after every step, outside the timed parts.
-  auto step = [&] {
-    sim.step();
-    try {
-      solver::check_state(sim.observe(), sim.steps_done());
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(o.case_path + ": the case is not stable, so no timings: " + e.what());
-    }
-  };
-  for (int s = 0; s < 2; ++s) step();  // warm-up: first touches, field allocation
-  sim.reset_timings();
-  for (int s = 0; s < o.case_steps; ++s) step();
-  const solver::StepTimings& t = sim.timings();
-  const double per = 1e3 / static_cast<double>(t.steps);
-  const double coupling = t.membrane_forces + t.ordering + t.spreading + t.indicator + t.interpolation;
-  // The plain fluid update of the same lattice (no velocity output, no coupling): the
-  // yardstick of the whole step.
-  solver::FluidLattice plain(sim.fluid().config());
-  plain.step();
-  const auto plain_start = std::chrono::steady_clock::now();
-  for (int s = 0; s < o.case_steps; ++s) plain.step();
-  const double plain_fluid =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - plain_start).count() / o.case_steps;
-  const double whole = (t.fluid + coupling) / static_cast<double>(t.steps);
-  std::size_t nodes = 0;
-  for (const auto& x : sim.positions()) nodes += x.size();
-  std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n", o.case_path.c_str(), build_info::git_revision,
-              omp_get_max_threads(), formats::host_name().c_str());
-  std::printf("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps, coupling interval %d\n",
-              sim.units().nx, sim.units().ny, sim.units().nz, sim.positions().size(), nodes,
-              static_cast<long long>(t.steps), c.coupling_interval);
-  std::printf("  fluid update (+ velocity field) %9.3f ms/step\n", t.fluid * per);
-  std::printf("  membrane forces              %9.3f ms/step\n", t.membrane_forces * per);
-  std::printf("  node ordering                %9.3f ms/step\n", t.ordering * per);
-  std::printf("  force spreading              %9.3f ms/step\n", t.spreading * per);
-  std::printf("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", t.indicator * per,
-              static_cast<long long>(t.indicator_builds));
-  std::printf("  interpolation + node update  %9.3f ms/step\n", t.interpolation * per);
-  std::printf("  whole step                   %9.3f ms/step\n", whole * 1e3);
-  std::printf("  plain fluid update           %9.3f ms/step (same lattice, no cells)\n", plain_fluid * 1e3);
-  std::printf("  whole step / plain fluid     %9.2f (target <= 4)\n", whole / plain_fluid);
-  std::printf("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling / t.fluid);
-  if (!o.json_path.empty())
-    formats::write_json_atomically(o.json_path, {{"case", o.case_path},
-                             {"provenance", formats::provenance_block()},
-                             {"threads", omp_get_max_threads()},
-                             {"steps", t.steps},
-                             {"indicator_builds", t.indicator_builds},
-                             {"coupling_interval", c.coupling_interval},
-                             {"plain_fluid_seconds_per_step", plain_fluid},
-                             {"seconds", {{"fluid", t.fluid},
-                                          {"membrane_forces", t.membrane_forces},
-                                          {"ordering", t.ordering},
-                                          {"spreading", t.spreading},
-                                          {"indicator", t.indicator},
-                                          {"interpolation", t.interpolation}}}});
+  const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps);
+  std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n%s", o.case_path.c_str(), build_info::git_revision,
+              omp_get_max_threads(), formats::host_name().c_str(), t.brief_report().c_str());
+  if (!o.json_path.empty()) {
+    nlohmann::json j = {{"case", o.case_path}, {"provenance", formats::provenance_block()}, {"threads", omp_get_max_threads()}};
+    j.update(t.to_json());
+    formats::write_json_atomically(o.json_path, j);
+  }
 }
 
 void run_bench(const BenchOptions& o) {

@@ -3,9 +3,7 @@
 // (and G_s fitted to) measured diameters.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,7 +12,7 @@
 #include "cli/data_folder.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
-#include "solver/membrane/cell_stretching.hpp"
+#include "solver/membrane/stretch_fit.hpp"
 
 namespace rbcal::cli {
 
@@ -36,53 +34,6 @@ struct StretchOptions {
   std::string json_path;
 };
 
-struct Measured {
-  std::vector<double> force_pn, axial_um, transverse_um;
-};
-
-// CSV with '#' comment lines and the header force_pN,axial_um,transverse_um.
-Measured read_measured(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  Measured m;
-  std::string line;
-  int line_no = 0;
-  bool header_seen = false;
-  const char* fields[] = {"force_pN", "axial_um", "transverse_um"};
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty() || line[0] == '#') continue;
-    if (!header_seen) {
-      if (line != "force_pN,axial_um,transverse_um")
-        throw std::runtime_error(path + ":" + std::to_string(line_no) +
-                                 ": header must be force_pN,axial_um,transverse_um");
-      header_seen = true;
-      continue;
-    }
-    std::stringstream ss(line);
-    std::string cell;
-    double values[3];
-    for (int k = 0; k < 3; ++k) {
-      if (!std::getline(ss, cell, ','))
-        throw std::runtime_error(path + ":" + std::to_string(line_no) + ": missing field " + fields[k]);
-      std::size_t used = 0;
-      try {
-        values[k] = std::stod(cell, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != cell.size() || !std::isfinite(values[k]) || values[k] < 0.0)
-        throw std::runtime_error(path + ":" + std::to_string(line_no) + ": field " + fields[k] +
-                                 " is not a non-negative number: '" + cell + "'");
-    }
-    m.force_pn.push_back(values[0]);
-    m.axial_um.push_back(values[1]);
-    m.transverse_um.push_back(values[2]);
-  }
-  if (m.force_pn.empty()) throw std::runtime_error(path + ": no data rows");
-  return m;
-}
-
 solver::StretchSettings settings_for(const StretchOptions& o, double shear_modulus) {
   solver::StretchSettings s;
   s.triangles = o.triangles;
@@ -100,23 +51,12 @@ std::vector<solver::StretchPoint> run(const StretchOptions& o, double shear_modu
   return solver::stretch_cell(settings_for(o, shear_modulus), forces);
 }
 
-// Root-mean-square difference of both diameters [um] from the measurements.
-double rms_misfit(const std::vector<solver::StretchPoint>& pts, const Measured& m) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double da = pts[i].axial_diameter * 1e6 - m.axial_um[i];
-    const double dt = pts[i].transverse_diameter * 1e6 - m.transverse_um[i];
-    sum += da * da + dt * dt;
-  }
-  return std::sqrt(sum / (2.0 * pts.size()));
-}
-
 void run_stretch(StretchOptions o) {
   if (!(o.shear_modulus > 0.0)) throw std::invalid_argument("--shear-modulus must be positive");
-  Measured measured;
+  solver::StretchMeasurements measured;
   const bool compare = !o.no_compare;
   if (compare) {
-    measured = read_measured(o.compare_path);
+    measured = solver::read_stretch_measurements(o.compare_path);
     if (o.forces_pn.empty()) o.forces_pn = measured.force_pn;
     else if (o.forces_pn != measured.force_pn)
       throw std::invalid_argument("--forces must match the forces of " + o.compare_path + " (or use --no-compare)");
@@ -127,25 +67,12 @@ void run_stretch(StretchOptions o) {
 
   double gs = o.shear_modulus;
   if (o.fit) {
-    // Golden-section search of the misfit over ln G_s in [1, 30] uN/m.
-    double lo = std::log(1e-6), hi = std::log(3e-5);
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    auto misfit = [&](double ln_gs) {
-      const double r = rms_misfit(run(o, std::exp(ln_gs), o.forces_pn), measured);
-      std::printf("  fit: G_s = %6.3f uN/m  rms misfit %.3f um\n", std::exp(ln_gs) * 1e6, r);
+    solver::StretchFitOptions fo;
+    fo.progress = [](double shear_modulus, double misfit) {
+      std::printf("  fit: G_s = %6.3f uN/m  rms misfit %.3f um\n", shear_modulus * 1e6, misfit);
       std::fflush(stdout);
-      return r;
     };
-    double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-    double f1 = misfit(m1), f2 = misfit(m2);
-    while (hi - lo > 0.01) {  // 1 % in G_s
-      if (f1 < f2) {
-        hi = m2; m2 = m1; f2 = f1; m1 = hi - g * (hi - lo); f1 = misfit(m1);
-      } else {
-        lo = m1; m1 = m2; f1 = f2; m2 = lo + g * (hi - lo); f2 = misfit(m2);
-      }
-    }
-    gs = std::exp(0.5 * (lo + hi));
+    gs = solver::fit_shear_modulus(settings_for(o, gs), measured, fo);
   }
 
   const std::vector<solver::StretchPoint> pts = run(o, gs, o.forces_pn);
@@ -167,7 +94,7 @@ void run_stretch(StretchOptions o) {
     if (compare) std::printf(" %10.3f %10.3f", measured.axial_um[i], measured.transverse_um[i]);
     std::printf(" %11.2e %10.4f %6s\n", pts[i].volume_error, pts[i].area_change, pts[i].converged ? "yes" : "NO");
   }
-  if (compare) std::printf("  rms misfit %.3f um against %s\n", rms_misfit(pts, measured), o.compare_path.c_str());
+  if (compare) std::printf("  rms misfit %.3f um against %s\n", solver::rms_misfit(pts, measured), o.compare_path.c_str());
 
   if (!o.json_path.empty()) {
     nlohmann::json j;
@@ -187,7 +114,7 @@ void run_stretch(StretchOptions o) {
                              {"volume_error", p.volume_error},
                              {"area_change", p.area_change},
                              {"converged", p.converged}});
-    if (compare) j["rms_misfit_um"] = rms_misfit(pts, measured);
+    if (compare) j["rms_misfit_um"] = solver::rms_misfit(pts, measured);
     formats::write_json_atomically(o.json_path, j);
   }
   for (const auto& p : pts)

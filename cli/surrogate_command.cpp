@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "calibration/model_setup.hpp"
 #include "cli/commands.hpp"
 #include "surrogate/surrogate_file.hpp"
 
@@ -23,7 +24,7 @@ struct SurrogateBuildOptions {
 
 struct SurrogatePredictOptions {
   std::string surrogate;
-  double phi = 0.0, ca = 0.0, lambda = 5.0;
+  double phi = 0.0, ca = 0.0, lambda = calibration::kDefaultViscosityRatio;
 };
 
 void print_model(const surrogate::ViscositySurrogate& s) {

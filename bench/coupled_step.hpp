@@ -1,0 +1,35 @@
+#pragma once
+// The cost of one coupled step of a simulation case, part by part (membrane forces, node
+// ordering, spreading, inside fraction, fluid, interpolation), against a plain fluid
+// update of the same lattice without cells, the yardstick of the wave-2 target (a whole
+// step within 4x the fluid update). The solver's guards run after every step, outside
+// the timed parts: timings of a state that is blowing up mean nothing.
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "solver/simulation/simulation_case.hpp"
+
+namespace rbcal::bench {
+
+struct CoupledStepTimings {
+  int nx = 0, ny = 0, nz = 0;
+  std::size_t cells = 0, membrane_nodes = 0;
+  int coupling_interval = 1;
+  std::int64_t steps = 0, indicator_builds = 0;
+  // Seconds per step.
+  double fluid = 0, membrane_forces = 0, ordering = 0, spreading = 0, indicator = 0, interpolation = 0;
+  double plain_fluid = 0;
+  double whole() const { return fluid + membrane_forces + ordering + spreading + indicator + interpolation; }
+  double coupling() const { return whole() - fluid; }
+
+  std::string brief_report() const;  // the table `rbcal bench --case` prints
+  nlohmann::json to_json() const;    // seconds in total over the timed steps, as before
+};
+
+// Two warm-up steps, then `steps` timed steps of the case, then as many plain fluid
+// steps. Throws std::runtime_error naming the case when it is not stable.
+CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps);
+
+}  // namespace rbcal::bench
