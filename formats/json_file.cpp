@@ -16,11 +16,15 @@ nlohmann::json read_json_file(const std::filesystem::path& file) {
   if (!in) throw FormatError(file.string(), "cannot open");
   std::stringstream text;
   text << in.rdbuf();
+  return parse_json_text(text.str(), file.string());
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
   try {
-    return nlohmann::json::parse(text.str());
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     // e.what() carries "parse error at line L, column C: ..."; e.byte the offset.
-    throw FormatError(file.string(), "invalid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+    throw FormatError(source, "invalid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
   }
 }
 

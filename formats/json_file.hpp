@@ -12,6 +12,8 @@ namespace rbcal::formats {
 // Throws FormatError "FILE: cannot open" or "FILE: invalid JSON (byte B): ... line L,
 // column C ...".
 nlohmann::json read_json_file(const std::filesystem::path& file);
+// The same for text already in memory; source names it in errors.
+nlohmann::json parse_json_text(const std::string& text, const std::string& source);
 
 // Writes the bytes of contents to file via FILE.tmp.PID and a rename (atomic on one file
 // system); throws std::runtime_error naming the file.

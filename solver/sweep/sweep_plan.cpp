@@ -10,8 +10,9 @@
 
 namespace rbcal::solver {
 
-SweepPlan read_sweep_plan(const std::string& path) {
-  const nlohmann::json j = formats::read_json_file(path);
+SweepPlan read_sweep_plan(const std::string& path) { return sweep_plan_from_json(formats::read_json_file(path), path); }
+
+SweepPlan sweep_plan_from_json(const nlohmann::json& j, const std::string& path) {
   const formats::ParameterGrid grid = formats::plan_grid_from_json(j, path);  // checks the schema too
   const formats::FieldReader r(j, path);
   SweepPlan plan;

@@ -37,5 +37,7 @@ struct SweepPlan {
 // Parses and checks a plan; errors name the file and the field. Every case is checked
 // as a case file would be.
 SweepPlan read_sweep_plan(const std::string& path);
+// The same for a parsed plan; source names it in errors and in SweepPlan::source.
+SweepPlan sweep_plan_from_json(const nlohmann::json& plan, const std::string& source);
 
 }  // namespace rbcal::solver
