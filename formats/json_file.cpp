@@ -25,6 +25,9 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
   } catch (const nlohmann::json::parse_error& e) {
     // e.what() carries "parse error at line L, column C: ..."; e.byte the offset.
     throw FormatError(source, "invalid JSON (byte " + std::to_string(e.byte) + "): " + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // Found by fuzzing: a number beyond double's range ("1e999") is out_of_range, not parse_error.
+    throw FormatError(source, std::string("invalid JSON: ") + e.what());
   }
 }
 

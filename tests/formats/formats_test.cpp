@@ -69,6 +69,9 @@ TEST(JsonFile, ReportsSyntaxErrorsWithLineAndWritesAtomically) {
   EXPECT_NE(message.find("line 2"), std::string::npos) << message;
   EXPECT_EQ(error_of([&] { read_json_file(temp_file("absent.json")); }), temp_file("absent.json").string() + ": cannot open");
 
+  // Found by fuzzing: a number beyond double's range was not reported as the file's error.
+  EXPECT_EQ(error_of([&] { parse_json_text("{\"a\": 1e999}", "big.json"); }).rfind("big.json: invalid JSON", 0), 0u);
+
   write_json_atomically(file, {{"a", 1}});
   EXPECT_EQ(read_json_file(file), (json{{"a", 1}}));
   // No temporary file is left behind.
