@@ -1,6 +1,6 @@
 #include "solver/simulation/case_runner.hpp"
 
-
+#include <array>
 #include <chrono>
 #include <csignal>
 #include <cmath>
@@ -31,159 +31,220 @@ namespace {
 volatile std::sig_atomic_t stop_requested = 0;
 extern "C" void request_stop(int) { stop_requested = 1; }
 
-}  // namespace
-
-nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
-  const auto start = std::chrono::steady_clock::now();
-  if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
-  fs::create_directories(opt.output_dir);
-  ShearFlowSimulation sim(c);
-  const LatticeUnits& u = sim.units();
-  const double gamma = u.shear_rate;
-  const auto total_steps = static_cast<std::int64_t>(std::ceil(c.strain_end / gamma - 1e-9));
-  const auto record_every = std::max<std::int64_t>(1, std::llround(c.record_interval / gamma));
-  const std::int64_t vtk_every = c.vtk_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.vtk_interval / gamma)) : 0;
-
-  if (opt.progress) {
-    const double v_cell = sim.positions().empty() ? 0.0 : enclosed_volume(sim.positions()[0], sim.triangles());
-    *opt.progress << "  " << sim.positions().size() << " cells, phi = "
-                  << sim.positions().size() * v_cell / (static_cast<double>(u.nx) * u.ny * u.nz) << ", lattice "
-                  << u.nx << " x " << u.ny << " x " << u.nz << ", " << total_steps << " steps\n";
+// SIGINT and SIGTERM request a stop while a run is in progress; the previous handlers
+// come back when it ends, however it ends.
+class StopOnSignals {
+ public:
+  StopOnSignals() : int_(std::signal(SIGINT, request_stop)), term_(std::signal(SIGTERM, request_stop)) {
+    stop_requested = 0;
   }
-  const std::string series_path = opt.output_dir + "/series.csv";
-  const std::string checkpoint_path = opt.output_dir + "/checkpoint.bin";
-  const std::int64_t checkpoint_every =
-      c.checkpoint_interval > 0 ? std::max<std::int64_t>(1, std::llround(c.checkpoint_interval / gamma)) : 0;
-  std::vector<double> window_stresslet, window_wall, window_d, window_angle;
-  auto keep_for_window = [&](double strain, double eta_s, double eta_w, double d, double angle) {
-    if (strain < c.window[0] - 1e-9 || strain > c.window[1] + 1e-9) return;
-    window_stresslet.push_back(eta_s);
-    window_wall.push_back(eta_w);
-    window_d.push_back(d);
-    window_angle.push_back(angle);
-  };
-  const std::string header =
-      "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,max_node_mach,axis_vorticity\n";
+  ~StopOnSignals() {
+    std::signal(SIGINT, int_);
+    std::signal(SIGTERM, term_);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
 
-  std::int64_t first_step = 1;
-  std::string kept_rows;
-  if (opt.resume && fs::exists(checkpoint_path)) {
-    sim.restore_checkpoint(checkpoint_path);
-    first_step = sim.steps_done() + 1;
-    // Keep the rows up to the checkpoint; later ones are recomputed.
-    std::ifstream old(series_path);
-    std::string line;
+ private:
+  void (*int_)(int);
+  void (*term_)(int);
+};
+
+// The samples inside the averaging window, per observable.
+struct WindowSamples {
+  std::array<double, 2> window;
+  std::vector<double> stresslet, wall, deformation, angle;
+  void keep(double strain, double eta_s, double eta_w, double d, double a) {
+    if (strain < window[0] - 1e-9 || strain > window[1] + 1e-9) return;
+    stresslet.push_back(eta_s);
+    wall.push_back(eta_w);
+    deformation.push_back(d);
+    angle.push_back(a);
+  }
+};
+
+// One case from its first (or resumed) step to its result, as a sequence of named steps
+// (the shape of Ceres' trust-region minimizer): schedule, resume, record, snapshot,
+// checkpoint, progress, result.
+class CaseRun {
+ public:
+  CaseRun(const SimulationCase& c, const RunOptions& opt)
+      : c_(c), opt_(opt), start_(std::chrono::steady_clock::now()), sim_(c), window_{c.window, {}, {}, {}, {}} {
+    if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
+    fs::create_directories(opt.output_dir);
+    const double gamma = sim_.units().shear_rate;
+    auto every = [&](double strain) { return std::max<std::int64_t>(1, std::llround(strain / gamma)); };
+    total_steps_ = static_cast<std::int64_t>(std::ceil(c.strain_end / gamma - 1e-9));
+    record_every_ = every(c.record_interval);
+    vtk_every_ = c.vtk_interval > 0 ? every(c.vtk_interval) : 0;
+    checkpoint_every_ = c.checkpoint_interval > 0 ? every(c.checkpoint_interval) : 0;
+  }
+
+  nlohmann::json run() {
+    announce();
+    const std::string kept_rows = opt_.resume && fs::exists(checkpoint_path()) ? resume() : "";
+    open_series(kept_rows);
+    if (vtk_every_) fs::create_directories(opt_.output_dir + "/vtk");
+    if (vtk_every_ && first_step_ == 1) snapshot(0);
+    const StopOnSignals stop_on_signals;
+    last_report_ = std::chrono::steady_clock::now();
+    for (std::int64_t step = first_step_; step <= total_steps_; ++step) {
+      advance(step);
+      if (step % record_every_ == 0 || step == total_steps_) record(step);
+      if (vtk_every_ && step % vtk_every_ == 0) snapshot(step);
+      const bool stop_now = step < total_steps_ && (stop_requested || (opt_.max_steps > 0 &&
+                                                                        step - first_step_ + 1 >= opt_.max_steps));
+      if ((checkpoint_every_ && step % checkpoint_every_ == 0) || stop_now) {
+        series_.flush();
+        sim_.save_checkpoint(checkpoint_path());
+      }
+      if (stop_now) return {{"status", "interrupted"}, {"strain", sim_.strain()}, {"checkpoint", checkpoint_path()}};
+      report_progress(step);
+    }
+    series_.close();
+    return result();
+  }
+
+ private:
+  std::string checkpoint_path() const { return opt_.output_dir + "/checkpoint.bin"; }
+  std::string series_path() const { return opt_.output_dir + "/series.csv"; }
+
+  void announce() const {
+    if (!opt_.progress) return;
+    const LatticeUnits& u = sim_.units();
+    *opt_.progress << "  " << sim_.positions().size() << " cells, phi = " << phi_actual() << ", lattice " << u.nx
+                   << " x " << u.ny << " x " << u.nz << ", " << total_steps_ << " steps\n";
+  }
+
+  // Restores the checkpoint and returns the series rows up to it (later ones are recomputed),
+  // with their window samples kept.
+  std::string resume() {
+    sim_.restore_checkpoint(checkpoint_path());
+    first_step_ = sim_.steps_done() + 1;
+    std::ifstream old(series_path());
+    std::string line, kept;
     std::getline(old, line);
     while (std::getline(old, line)) {
       std::vector<double> v;
       std::stringstream ss(line);
       std::string cell;
       while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
-      if (v.size() < 5 || v[0] > sim.strain() + 1e-9) break;
-      keep_for_window(v[0], v[1], v[2], v[3], v[4]);
-      kept_rows += line + "\n";
+      if (v.size() < 5 || v[0] > sim_.strain() + 1e-9) break;
+      window_.keep(v[0], v[1], v[2], v[3], v[4]);
+      kept += line + "\n";
     }
-    if (opt.progress) *opt.progress << "  resuming from " << checkpoint_path << " at strain " << sim.strain() << "\n";
+    if (opt_.progress) *opt_.progress << "  resuming from " << checkpoint_path() << " at strain " << sim_.strain() << "\n";
+    return kept;
   }
-  std::ofstream series(series_path, std::ios::trunc);
-  if (!series) throw std::runtime_error("cannot write " + series_path);
-  series << header << kept_rows << std::setprecision(17);  // exact round trip on resume
-  std::vector<std::pair<double, std::string>> vtk_cells, vtk_fluid;
-  if (vtk_every) fs::create_directories(opt.output_dir + "/vtk");
-  auto snapshot = [&](std::int64_t step) {
-    std::ostringstream name;
-    name << std::setw(7) << std::setfill('0') << step;
-    const std::string cells = "vtk/cells_" + name.str() + ".vtp", fluid = "vtk/fluid_" + name.str() + ".vti";
-    write_membranes_vtp(opt.output_dir + "/" + cells,
-                        {&sim.positions(), &sim.velocities(), &sim.membrane_forces(), &sim.triangles()});
-    write_fluid_vti(opt.output_dir + "/" + fluid, sim.fluid(), &sim.inside_fraction().alpha());
-    vtk_cells.emplace_back(sim.strain(), cells);
-    vtk_fluid.emplace_back(sim.strain(), fluid);
-    write_pvd(opt.output_dir + "/cells.pvd", vtk_cells);
-    write_pvd(opt.output_dir + "/fluid.pvd", vtk_fluid);
-  };
-  if (vtk_every && first_step == 1) snapshot(0);
 
-  stop_requested = 0;
-  auto previous_int = std::signal(SIGINT, request_stop);
-  auto previous_term = std::signal(SIGTERM, request_stop);
-  struct RestoreSignals {
-    decltype(previous_int) i, t;
-    ~RestoreSignals() {
-      std::signal(SIGINT, i);
-      std::signal(SIGTERM, t);
-    }
-  } restore_signals{previous_int, previous_term};
+  void open_series(const std::string& kept_rows) {
+    series_.open(series_path(), std::ios::trunc);
+    if (!series_) throw std::runtime_error("cannot write " + series_path());
+    series_ << "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,"
+               "max_node_mach,axis_vorticity\n"
+            << kept_rows << std::setprecision(17);  // exact round trip on resume
+  }
 
-  auto last_report = std::chrono::steady_clock::now();
-  for (std::int64_t step = first_step; step <= total_steps; ++step) {
+  void advance(std::int64_t step) {
     try {
-      sim.step();
+      sim_.step();
     } catch (const std::runtime_error& e) {
       throw std::runtime_error("run stopped at step " + std::to_string(step) + ": " + e.what());
     }
-    if (step % record_every == 0 || step == total_steps) {
-      const Observables o = sim.observe();
-      try {
-        check_state(o, step);
-      } catch (const std::runtime_error& e) {
-        const std::string failed = opt.output_dir + "/checkpoint_failed.bin";
-        sim.save_checkpoint(failed);
-        throw std::runtime_error(std::string(e.what()) + "; state written to " + failed);
-      }
-      double vol = 0.0;
-      for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
-      const double d = o.cells.empty() ? 0.0 : o.cells[0].shape.taylor_deformation;
-      const double angle = o.cells.empty() ? 0.0 : o.cells[0].shape.inclination * 180.0 / std::numbers::pi;
-      const double axis = o.cells.empty() ? 0.0 : o.cells[0].axis_vorticity;
-      series << o.strain << ',' << o.eta_re_stresslet << ',' << o.eta_re_wall << ',' << d << ',' << angle << ','
-             << vol << ',' << o.max_mach << ',' << axis << '\n';
-      keep_for_window(o.strain, o.eta_re_stresslet, o.eta_re_wall, d, angle);
-    }
-    if (vtk_every && step % vtk_every == 0) snapshot(step);
-    const bool stop_now =
-        step < total_steps && (stop_requested || (opt.max_steps > 0 && step - first_step + 1 >= opt.max_steps));
-    if ((checkpoint_every && step % checkpoint_every == 0) || stop_now) {
-      series.flush();
-      sim.save_checkpoint(checkpoint_path);
-    }
-    if (stop_now) return {{"status", "interrupted"}, {"strain", sim.strain()}, {"checkpoint", checkpoint_path}};
-    const auto now = std::chrono::steady_clock::now();
-    if (opt.progress && std::chrono::duration<double>(now - last_report).count() >= opt.progress_seconds) {
-      last_report = now;
-      const double elapsed = std::chrono::duration<double>(now - start).count();
-      const double eta = elapsed / static_cast<double>(step - first_step + 1) * (total_steps - step);
-      *opt.progress << "  step " << step << "/" << total_steps << "  strain " << std::fixed << std::setprecision(2)
-                    << sim.strain() << "/" << c.strain_end << "  elapsed " << format_duration(elapsed) << "  ETA "
-                    << format_duration(eta) << std::endl;
-    }
   }
-  series.close();
 
-  const MeanWithError eta = block_average(window_stresslet), wall = block_average(window_wall);
-  const MeanWithError d = block_average(window_d), angle = block_average(window_angle);
-  const double cell_volume = enclosed_volume(sim.positions().empty() ? std::vector<Vec3>{} : sim.positions()[0],
-                                             sim.triangles());
-  nlohmann::json j = case_to_json(c);
-  for (const auto& [name, value] : u.entries()) j["lattice"][name] = value;
-  j["result"] = {
-      {"eta_re", eta.mean},
-      {"eta_re_sem", eta.sem},
-      {"eta_re_wall", wall.mean},
-      {"eta_re_wall_sem", wall.sem},
-      {"window_samples", eta.samples},
-      {"phi_actual", sim.positions().size() * cell_volume / (static_cast<double>(u.nx) * u.ny * u.nz)},
-      {"n_cells", sim.positions().size()},
-      {"steps", total_steps},
-      {"taylor_deformation", d.mean},
-      {"taylor_deformation_sem", d.sem},
-      {"inclination_deg", angle.mean},
-      {"inclination_deg_sem", angle.sem},
-      {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()},
-  };
-  j["provenance"] = formats::provenance_block();
-  formats::write_json_atomically(opt.output_dir + "/result.json", j);
-  return j;
-}
+  // Observes, checks the guards (writing checkpoint_failed.bin if they fail), and writes a
+  // series row.
+  void record(std::int64_t step) {
+    const Observables o = sim_.observe();
+    try {
+      check_state(o, step);
+    } catch (const std::runtime_error& e) {
+      const std::string failed = opt_.output_dir + "/checkpoint_failed.bin";
+      sim_.save_checkpoint(failed);
+      throw std::runtime_error(std::string(e.what()) + "; state written to " + failed);
+    }
+    double vol = 0.0;
+    for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
+    const double d = o.cells.empty() ? 0.0 : o.cells[0].shape.taylor_deformation;
+    const double angle = o.cells.empty() ? 0.0 : o.cells[0].shape.inclination * 180.0 / std::numbers::pi;
+    const double axis = o.cells.empty() ? 0.0 : o.cells[0].axis_vorticity;
+    series_ << o.strain << ',' << o.eta_re_stresslet << ',' << o.eta_re_wall << ',' << d << ',' << angle << ',' << vol
+            << ',' << o.max_mach << ',' << axis << '\n';
+    window_.keep(o.strain, o.eta_re_stresslet, o.eta_re_wall, d, angle);
+  }
+
+  void snapshot(std::int64_t step) {
+    std::ostringstream name;
+    name << std::setw(7) << std::setfill('0') << step;
+    const std::string cells = "vtk/cells_" + name.str() + ".vtp", fluid = "vtk/fluid_" + name.str() + ".vti";
+    write_membranes_vtp(opt_.output_dir + "/" + cells,
+                        {&sim_.positions(), &sim_.velocities(), &sim_.membrane_forces(), &sim_.triangles()});
+    write_fluid_vti(opt_.output_dir + "/" + fluid, sim_.fluid(), &sim_.inside_fraction().alpha());
+    vtk_cells_.emplace_back(sim_.strain(), cells);
+    vtk_fluid_.emplace_back(sim_.strain(), fluid);
+    write_pvd(opt_.output_dir + "/cells.pvd", vtk_cells_);
+    write_pvd(opt_.output_dir + "/fluid.pvd", vtk_fluid_);
+  }
+
+  void report_progress(std::int64_t step) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!opt_.progress || std::chrono::duration<double>(now - last_report_).count() < opt_.progress_seconds) return;
+    last_report_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double eta = elapsed / static_cast<double>(step - first_step_ + 1) * (total_steps_ - step);
+    *opt_.progress << "  step " << step << "/" << total_steps_ << "  strain " << std::fixed << std::setprecision(2)
+                   << sim_.strain() << "/" << c_.strain_end << "  elapsed " << format_duration(elapsed) << "  ETA "
+                   << format_duration(eta) << std::endl;
+  }
+
+  double phi_actual() const {
+    const double cell_volume =
+        sim_.positions().empty() ? 0.0 : enclosed_volume(sim_.positions()[0], sim_.triangles());
+    const LatticeUnits& u = sim_.units();
+    return sim_.positions().size() * cell_volume / (static_cast<double>(u.nx) * u.ny * u.nz);
+  }
+
+  // result.json: the case, the lattice values, the windowed averages, provenance.
+  nlohmann::json result() const {
+    const MeanWithError eta = block_average(window_.stresslet), wall = block_average(window_.wall);
+    const MeanWithError d = block_average(window_.deformation), angle = block_average(window_.angle);
+    nlohmann::json j = case_to_json(c_);
+    for (const auto& [name, value] : sim_.units().entries()) j["lattice"][name] = value;
+    j["result"] = {
+        {"eta_re", eta.mean},
+        {"eta_re_sem", eta.sem},
+        {"eta_re_wall", wall.mean},
+        {"eta_re_wall_sem", wall.sem},
+        {"window_samples", eta.samples},
+        {"phi_actual", phi_actual()},
+        {"n_cells", sim_.positions().size()},
+        {"steps", total_steps_},
+        {"taylor_deformation", d.mean},
+        {"taylor_deformation_sem", d.sem},
+        {"inclination_deg", angle.mean},
+        {"inclination_deg_sem", angle.sem},
+        {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
+    };
+    j["provenance"] = formats::provenance_block();
+    formats::write_json_atomically(opt_.output_dir + "/result.json", j);
+    return j;
+  }
+
+  const SimulationCase& c_;
+  const RunOptions& opt_;
+  const std::chrono::steady_clock::time_point start_;
+  ShearFlowSimulation sim_;
+  std::int64_t total_steps_ = 0, record_every_ = 1, vtk_every_ = 0, checkpoint_every_ = 0;
+  std::int64_t first_step_ = 1;
+  WindowSamples window_;
+  std::ofstream series_;
+  std::vector<std::pair<double, std::string>> vtk_cells_, vtk_fluid_;
+  std::chrono::steady_clock::time_point last_report_;
+};
+
+}  // namespace
+
+nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) { return CaseRun(c, opt).run(); }
 
 }  // namespace rbcal::solver
