@@ -18,51 +18,17 @@ namespace rbcal::cli {
 namespace {
 
 struct CouetteOptions {
-  double shear_rate = 100.0;          // 1/s
-  double plasma_viscosity = 1.569e-3; // Pa s (seed study, plasma at 22 C)
-  double radius = 4e-6;               // m
-  double height_in_radii = 10.0;
-  int nodes_per_radius = 8;
-  double tau = 1.0;
-  double reynolds = 0.2;
-  double tolerance = 1e-12;
+  solver::CouetteDemo demo;
   std::string json_path;
 };
 
-void run_couette(const CouetteOptions& o) {
-  using namespace rbcal::solver;
-  if (!(o.shear_rate > 0.0)) throw std::invalid_argument("--shear-rate must be positive");
-  if (!(o.plasma_viscosity > 0.0)) throw std::invalid_argument("--plasma-viscosity must be positive");
-  if (!(o.radius > 0.0)) throw std::invalid_argument("--radius must be positive");
-
-  FlowParameters flow;
-  flow.reynolds_number = o.reynolds;
-  LatticeResolution res;
-  res.nodes_per_radius = o.nodes_per_radius;
-  res.tau_out = o.tau;
-  // The flow does not vary along x or z: a 4-node slab is the whole problem.
-  res.box_in_radii = {4.0 / o.nodes_per_radius, o.height_in_radii, 4.0 / o.nodes_per_radius};
-  const LatticeUnits lu = derive_lattice_units(flow, res);
-
-  FluidConfig cfg;
-  cfg.nx = lu.nx;
-  cfg.ny = lu.ny;
-  cfg.nz = lu.nz;
-  cfg.viscosity = lu.nu_out;
-  cfg.wall_velocity_bottom = -lu.wall_speed;
-  cfg.wall_velocity_top = lu.wall_speed;
-  FluidLattice fluid(cfg);
-  CouetteRun run;
-  run.tolerance = o.tolerance;
-  const CouetteResult r = run_to_steady_couette(fluid, run);
-
-  // Physical scales: dt from the shear rate, stress from eta0 gamma_dot <-> nu gamma_dot_lu.
-  const double dt = lu.shear_rate / o.shear_rate;
-  const double stress_scale = o.plasma_viscosity * o.shear_rate / (lu.nu_out * lu.shear_rate);
-  const double measured_rate = r.measured_shear_rate / dt;
-  const double wall_stress = r.wall_shear_stress * stress_scale;
-  const double measured_viscosity = wall_stress / measured_rate;
-
+void run_couette(const CouetteOptions& opts) {
+  const solver::CouetteDemo& o = opts.demo;
+  const solver::CouetteDemoResult d = solver::run_couette_demo(o);
+  const solver::LatticeUnits& lu = d.lattice;
+  const solver::CouetteResult& r = d.run;
+  const double dt = d.dt, measured_rate = d.measured_shear_rate, wall_stress = d.wall_shear_stress;
+  const double measured_viscosity = d.viscosity_from_walls;
   std::printf("rbcal couette: plane Couette flow, D3Q19 TRT lattice Boltzmann\n");
   std::printf("  lattice           %d x %d x %d nodes (N_a = %d), tau = %g, nu = %.6g\n", lu.nx, lu.ny,
               lu.nz, o.nodes_per_radius, lu.tau_out, lu.nu_out);
@@ -78,7 +44,7 @@ void run_couette(const CouetteOptions& o) {
               measured_viscosity * 1e3, o.plasma_viscosity * 1e3,
               std::abs(measured_viscosity / o.plasma_viscosity - 1.0));
 
-  if (!o.json_path.empty()) {
+  if (!opts.json_path.empty()) {
     nlohmann::json j;
     for (const auto& [name, value] : lu.entries()) j["lattice"][name] = value;
     j["steps"] = r.steps;
@@ -88,7 +54,7 @@ void run_couette(const CouetteOptions& o) {
     j["wall_shear_stress_Pa"] = wall_stress;
     j["viscosity_from_walls_Pa_s"] = measured_viscosity;
     j["provenance"] = formats::provenance_block();
-    formats::write_json_atomically(o.json_path, j);
+    formats::write_json_atomically(opts.json_path, j);
   }
   if (!r.converged) throw std::runtime_error("Couette flow did not reach steady state");
 }
@@ -99,19 +65,19 @@ void add_couette_command(CLI::App& app) {
   auto opts = std::make_shared<CouetteOptions>();
   CLI::App* cmd = app.add_subcommand(
       "couette", "Demonstration: sheared plane Couette flow to steady state, measured vs imposed shear");
-  cmd->add_option("--shear-rate", opts->shear_rate, "Imposed shear rate [1/s]")->capture_default_str();
-  cmd->add_option("--plasma-viscosity", opts->plasma_viscosity, "Plasma viscosity eta0 [Pa s]")
+  cmd->add_option("--shear-rate", opts->demo.shear_rate, "Imposed shear rate [1/s]")->capture_default_str();
+  cmd->add_option("--plasma-viscosity", opts->demo.plasma_viscosity, "Plasma viscosity eta0 [Pa s]")
       ->capture_default_str();
-  cmd->add_option("--radius", opts->radius, "Cell major radius a [m]; sets dx = a / N_a")
+  cmd->add_option("--radius", opts->demo.radius, "Cell major radius a [m]; sets dx = a / N_a")
       ->capture_default_str();
-  cmd->add_option("--height", opts->height_in_radii, "Gap H between the walls [cell radii a]")
+  cmd->add_option("--height", opts->demo.height_in_radii, "Gap H between the walls [cell radii a]")
       ->capture_default_str();
-  cmd->add_option("--nodes-per-radius", opts->nodes_per_radius, "Lattice nodes per radius N_a")
+  cmd->add_option("--nodes-per-radius", opts->demo.nodes_per_radius, "Lattice nodes per radius N_a")
       ->capture_default_str();
-  cmd->add_option("--tau", opts->tau, "Plasma relaxation time tau (> 1/2)")->capture_default_str();
-  cmd->add_option("--reynolds", opts->reynolds, "Reynolds number rho gamma_dot a^2 / eta0")
+  cmd->add_option("--tau", opts->demo.tau, "Plasma relaxation time tau (> 1/2)")->capture_default_str();
+  cmd->add_option("--reynolds", opts->demo.reynolds, "Reynolds number rho gamma_dot a^2 / eta0")
       ->capture_default_str();
-  cmd->add_option("--tolerance", opts->tolerance,
+  cmd->add_option("--tolerance", opts->demo.tolerance,
                   "Steady when the profile changes less than this (relative) per 200 steps")
       ->capture_default_str();
   cmd->add_option("--json", opts->json_path, "Also write the result as JSON to this file");
