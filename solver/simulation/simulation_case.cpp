@@ -6,6 +6,7 @@
 #include "formats/format_error.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
+#include "solver/lattice_units.hpp"
 
 namespace rbcal::solver {
 
@@ -83,6 +84,13 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     c.quiescent = q->get<bool>();
   }
   if (c.cells.empty() && c.target_phi == 0.0) r.fail("cells.placements", "no cells: give placements (or params.phi)");
+  // The lattice this case implies must exist (e.g. the box a whole number of nodes at N_a):
+  // found by fuzzing the plan reader, which otherwise failed later without naming the file.
+  try {
+    derive_lattice_units(c.flow, c.resolution);
+  } catch (const std::invalid_argument& e) {
+    r.fail("numerics", e.what());
+  }
   return c;
 }
 

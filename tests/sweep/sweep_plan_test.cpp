@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "solver/lattice_units.hpp"
@@ -51,5 +52,26 @@ TEST(SweepPlan, RejectsANonPositiveShearModulusCapNamingTheField) {
     FAIL() << "accepted a negative cap";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("max_shear_modulus_lattice"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SweepPlan, RefusesABoxThatIsNoWholeNumberOfNodesNamingThePlan) {
+  // Found by fuzzing: the lattice of the base case failed later, without naming the file.
+  const std::string path = write_plan("rbcal_plan_badbox.json", "");
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto at = text.find("[4.0, 4.0, 4.0]");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 15, "[4.1, 4.0, 4.0]");
+  std::ofstream(path) << text;
+  try {
+    read_sweep_plan(path);
+    FAIL() << "accepted a box of 16.4 nodes";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(path + " (base): field numerics: lattice units: box"), std::string::npos)
+        << e.what();
   }
 }
