@@ -22,9 +22,19 @@ CalibrationInput make_calibration_input(const RheometerData& data, const PlasmaV
     SampleData sample;
     sample.name = name;
     std::vector<RheometerRow> plasma_rows;
-    for (const auto& row : data.rows)
-      if (row.sample == name && row.kind == MeasurementKind::plasma) plasma_rows.push_back(row);
-    sample.plasma = estimate_plasma_viscosity(plasma_rows, data.source, options);
+    const RheometerRow* assumption = nullptr;
+    for (const auto& row : data.rows) {
+      if (row.sample != name) continue;
+      if (row.kind == MeasurementKind::plasma) plasma_rows.push_back(row);
+      if (row.kind == MeasurementKind::plasma_assumed) assumption = &row;
+    }
+    if (assumption) {
+      sample.plasma.eta0 = assumption->viscosity;
+      sample.plasma.standard_error = assumption->viscosity_sd;
+      sample.plasma.assumed = true;
+    } else {
+      sample.plasma = estimate_plasma_viscosity(plasma_rows, data.source, options);
+    }
     const double eta0 = sample.plasma.eta0;
     const double relative_se0 = sample.plasma.standard_error / eta0;
     for (const auto& row : data.rows) {

@@ -18,6 +18,7 @@ struct PlasmaViscosity {
   double scatter_standard_error = 0.0;     // s / sqrt(m) over the m plateau rows (0 if m = 1)
   double propagated_standard_error = 0.0;  // sqrt(sum sd_i^2 / n_i) / m, from the rows' own sd
   int plateau_rows = 0;
+  bool assumed = false;  // given as an assumption (plasma_assumed row), not measured
 };
 
 // plasma_rows: the rows of one sample whose kind is plasma. Throws RheometerDataError naming

@@ -167,7 +167,8 @@ nlohmann::json sample_summary(const SampleReport& s) {
   const PlasmaViscosity& p = s.sample.plasma;
   j["plasma"] = {{"eta0_mPa_s", kMilli * p.eta0},
                  {"eta0_standard_error_mPa_s", kMilli * p.standard_error},
-                 {"plateau_rows", p.plateau_rows}};
+                 {"plateau_rows", p.plateau_rows},
+                 {"assumed", p.assumed}};
   j["points"] = points_json(s);
   json methods = json::object();
   if (s.alpha) methods["alpha"] = alpha_json(*s.alpha);

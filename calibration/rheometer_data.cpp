@@ -90,6 +90,7 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
   // (sample, kind, phi, shear rate) -> line, for duplicates.
   std::map<std::tuple<std::string, int, double, double>, int> seen;
   std::map<std::string, std::pair<int, bool>> first_line_and_plasma;
+  std::map<std::string, MeasurementKind> plasma_kind;  // per sample: measured or assumed
 
   std::string raw;
   int line = 0;
@@ -132,31 +133,47 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
       row.kind = MeasurementKind::plasma;
     else if (kind == "suspension")
       row.kind = MeasurementKind::suspension;
+    else if (kind == "plasma_assumed")
+      row.kind = MeasurementKind::plasma_assumed;
     else
-      reader.fail(kKind, "unknown kind '" + kind + "' (expected plasma or suspension)");
+      reader.fail(kKind, "unknown kind '" + kind + "' (expected plasma, suspension or plasma_assumed)");
+    const bool assumed = row.kind == MeasurementKind::plasma_assumed;
     row.phi = reader.number(kPhi);
-    if (row.kind == MeasurementKind::plasma && row.phi != 0.0)
+    if (row.kind != MeasurementKind::suspension && row.phi != 0.0)
       reader.fail(kPhi, "plasma rows must have phi = 0");
     if (row.kind == MeasurementKind::suspension && !(row.phi > 0.0 && row.phi < 1.0))
       reader.fail(kPhi, "volume fraction of a suspension must lie in (0, 1)");
     row.shear_rate = reader.number(kShearRate);
-    if (!(row.shear_rate > 0.0)) reader.fail(kShearRate, "shear rate must be positive");
+    if (assumed && row.shear_rate != 0.0)
+      reader.fail(kShearRate, "a plasma_assumed row has no shear rate: write 0");
+    if (!assumed && !(row.shear_rate > 0.0)) reader.fail(kShearRate, "shear rate must be positive");
     row.viscosity = reader.number(kViscosity) * kPascalSecondsPerMilli;
     if (!(row.viscosity > 0.0)) reader.fail(kViscosity, "viscosity must be positive");
     row.viscosity_sd = reader.number(kSd) * kPascalSecondsPerMilli;
     if (row.viscosity_sd < 0.0) reader.fail(kSd, "standard deviation must not be negative");
+    if (assumed && !(row.viscosity_sd > 0.0))
+      reader.fail(kSd, "an assumed plasma viscosity needs its standard deviation (> 0)");
     const double repeats = reader.number(kRepeats);
     if (repeats != std::floor(repeats) || repeats < 1.0 || repeats > 1e9)
       reader.fail(kRepeats, "number of repeats must be an integer >= 1");
     row.repeats = static_cast<int>(repeats);
 
+    auto& sample_state = first_line_and_plasma.try_emplace(row.sample, line, false).first->second;
+    if (row.kind != MeasurementKind::suspension) {
+      // Measured and assumed plasma rows do not mix, and one assumption is enough.
+      const auto [it, first] = plasma_kind.try_emplace(row.sample, row.kind);
+      if (!first && (it->second != row.kind || assumed))
+        reader.fail(kKind, "sample '" + row.sample + "' already has " +
+                               (it->second == MeasurementKind::plasma ? "measured plasma rows"
+                                                                      : "a plasma_assumed row") +
+                               "; give measured plasma rows or one plasma_assumed row");
+      sample_state.second = true;
+    }
     const auto key = std::make_tuple(row.sample, static_cast<int>(row.kind), row.phi, row.shear_rate);
     if (const auto it = seen.find(key); it != seen.end())
       reader.fail(kShearRate, "duplicate of line " + std::to_string(it->second) +
                                   " (same sample, kind, phi and shear rate)");
     seen.emplace(key, line);
-    auto& sample_state = first_line_and_plasma.try_emplace(row.sample, line, false).first->second;
-    if (row.kind == MeasurementKind::plasma) sample_state.second = true;
     data.rows.push_back(row);
   }
   if (!have_header) throw RheometerDataError(source_name, line, "(header)", "no header line");
@@ -165,7 +182,8 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
     const auto& [first_line, has_plasma] = first_line_and_plasma.at(name);
     if (!has_plasma)
       throw RheometerDataError(source_name, first_line, "sample",
-                               "sample '" + name + "' has no plasma rows (needed for eta0)");
+                               "sample '" + name + "' has no plasma rows (needed for eta0; give measured plasma "
+                               "rows or one plasma_assumed row with the assumed eta0 and its sd)");
   }
   return data;
 }

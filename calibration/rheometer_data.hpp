@@ -3,6 +3,9 @@
 //   sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n
 // one row per mean value, kind `plasma` or `suspension`, several samples per file,
 // `#` lines for provenance. Viscosities are converted to SI (Pa s) on reading.
+// A sample without measured plasma rows may give one `plasma_assumed` row instead: phi 0,
+// shear rate 0 (none), viscosity_mPa_s the assumed eta0 and sd_mPa_s its standard
+// deviation (> 0), which the calibration integrates over and reports as assumed.
 #include <filesystem>
 #include <iosfwd>
 #include <stdexcept>
@@ -11,7 +14,7 @@
 
 namespace rbcal::calibration {
 
-enum class MeasurementKind { plasma, suspension };
+enum class MeasurementKind { plasma, suspension, plasma_assumed };
 
 struct RheometerRow {
   std::string sample;

@@ -20,7 +20,7 @@ namespace cal = rbcal::calibration;
 // The options as typed: paths as strings, the radius in um; the rest binds to the job.
 struct CalibrateOptions {
   cal::CalibrationJobOptions job;
-  std::string data = shipped_file("samples/default.csv");
+  std::string data = shipped_file("samples/kim2017_whole_blood.csv");
   std::string surrogate = shipped_file("library/default/surrogate.json");
   std::string report = "calibration_report";
   double cell_radius_um = cal::kDefaultCellRadius * 1e6;

@@ -105,6 +105,14 @@ TEST(RheometerData, EveryMalformedFileNamesFileLineAndField) {
       {"unknown_kind.csv", kHeader + good_plasma + "s,blood,0.4,20,5.0,0.1,3\n", 3, "kind", "unknown kind 'blood'"},
       {"empty_sample.csv", kHeader + good_plasma + ",suspension,0.4,20,5.0,0.1,3\n", 3, "sample", "empty sample"},
       {"no_rows.csv", std::string("# only a comment\n") + kHeader, 2, "(row)", "no data rows"},
+      {"assumed_without_sd.csv", kHeader + std::string("s,plasma_assumed,0,0,1.4,0,1\n"), 2, "sd_mPa_s",
+       "needs its standard deviation"},
+      {"assumed_with_rate.csv", kHeader + std::string("s,plasma_assumed,0,20,1.4,0.2,1\n"), 2, "shear_rate_per_s",
+       "write 0"},
+      {"assumed_and_measured.csv", kHeader + good_plasma + "s,plasma_assumed,0,0,1.4,0.2,1\n", 3, "kind",
+       "already has measured plasma rows"},
+      {"assumed_twice.csv", kHeader + std::string("s,plasma_assumed,0,0,1.4,0.2,1\ns,plasma_assumed,0,0,1.5,0.2,1\n"),
+       3, "kind", "already has a plasma_assumed row"},
   };
   for (const auto& bad : table) {
     SCOPED_TRACE(bad.name);
@@ -129,4 +137,27 @@ TEST(RheometerData, MissingFileIsNamed) {
   } catch (const RheometerDataError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/rheometer.csv"), std::string::npos);
   }
+}
+
+TEST(RheometerData, AnAssumedPlasmaViscosityStandsInForPlasmaRows) {
+  // A sample without plasma measurements (the shipped Kim et al. 2017 digitisation) with an
+  // assumed eta0 = 1.45 +- 0.20 mPa s: eta_re uses it, and its error enters every point.
+  const fs::path path = write_temp("assumed.csv", std::string(kHeader) +
+                                                      "k,plasma_assumed,0,0,1.45,0.20,1\n"
+                                                      "k,suspension,0.45,100,4.35,0.0,1\n");
+  const CalibrationInput input = read_calibration_input(path);
+  const SampleData& k = input.sample("k");
+  EXPECT_TRUE(k.plasma.assumed);
+  EXPECT_NEAR(k.plasma.eta0, 1.45e-3, 1e-15);
+  EXPECT_NEAR(k.plasma.standard_error, 0.20e-3, 1e-15);
+  ASSERT_EQ(k.points.size(), 1u);
+  EXPECT_NEAR(k.points[0].eta_re, 3.0, 1e-12);
+  EXPECT_NEAR(k.points[0].eta_re_sd, 3.0 * 0.20 / 1.45, 1e-12);  // the assumption's error alone
+}
+
+TEST(RheometerData, TheShippedSampleReads) {
+  const CalibrationInput input = read_calibration_input(RBCAL_SAMPLES_DIR "/kim2017_whole_blood.csv");
+  ASSERT_EQ(input.samples.size(), 1u);
+  EXPECT_TRUE(input.samples[0].plasma.assumed);
+  EXPECT_EQ(input.samples[0].points.size(), 60u);  // 20 shear rates x hematocrit 0.35, 0.45, 0.55
 }
