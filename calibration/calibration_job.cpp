@@ -9,6 +9,7 @@
 
 #include "calibration/alpha_method.hpp"
 #include "calibration/direct_fit.hpp"
+#include "calibration/hematocrit_order.hpp"
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
@@ -45,6 +46,14 @@ class SampleCalibration {
     if (sample.points.size() < all_points)
       r.warnings.push_back(std::to_string(all_points - sample.points.size()) + " points with phi > " +
                            shown(o_.phi_max) + " left out (--phi-max)");
+    if (!o_.keep_out_of_hematocrit_order)
+      for (const OutOfOrderPoint& bad : points_out_of_hematocrit_order(sample.points)) {
+        std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) {
+          return p.line == bad.point.line && p.phi == bad.point.phi && p.shear_rate == bad.point.shear_rate;
+        });
+        r.warnings.push_back("left out, viscosity below the lower hematocrit's (--keep-out-of-order keeps it): " +
+                             bad.reason());
+      }
     r.sample = sample;
     if (o_.runs("alpha")) alpha(r);
     if (o_.runs("direct")) direct(r);
@@ -157,6 +166,7 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"cell_radius_um", setup.cell_radius * 1e6},
           {"plateau_min_shear_rate_per_s", plasma.plateau_min_shear_rate},
           {"phi_max", phi_max},
+          {"keep_out_of_hematocrit_order", keep_out_of_hematocrit_order},
           {"seed", sampler.seed},
           {"threads", sampler.threads},
           {"compare", compare},

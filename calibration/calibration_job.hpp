@@ -30,6 +30,9 @@ struct CalibrationJobOptions {
   ModelSetup setup;                      // a, lambda, fit_lambda: shared by the methods
   PlasmaViscosityOptions plasma;         // which plasma rows give eta0
   double phi_max = 1.0;                  // points above are left out
+  // Points whose eta_re is not above the next lower hematocrit's curve are left out and
+  // named (calibration/hematocrit_order.hpp) unless this is set.
+  bool keep_out_of_hematocrit_order = false;
   McmcOptions sampler;                   // seed, threads, steps, chains, walkers
   std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
   ReportOptions report;

@@ -1,0 +1,51 @@
+// The hematocrit-order rule: a point whose eta_re is not above the next lower hematocrit's
+// curve at its shear rate is named, others are not; rates outside the lower curve are not
+// judged. On the shipped Kim et al. 2017 sample it names exactly the two 55 % points at 780
+// and 992 1/s that its provenance header flags (55 %: 4.054 and 3.954 mPa s, 45 %: 4.113
+// and 4.033 mPa s at the nearest rates).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "calibration/hematocrit_order.hpp"
+
+using namespace rbcal::calibration;
+
+namespace {
+
+RelativeViscosityPoint point(double phi, double rate, double eta_re, int line) {
+  RelativeViscosityPoint p;
+  p.phi = phi;
+  p.shear_rate = rate;
+  p.eta_re = eta_re;
+  p.line = line;
+  return p;
+}
+
+}  // namespace
+
+TEST(HematocritOrder, NamesPointsNotAboveTheLowerCurve) {
+  const std::vector<RelativeViscosityPoint> points = {
+      point(0.3, 10.0, 3.0, 1),  point(0.3, 100.0, 2.0, 2),
+      point(0.4, 31.6, 3.0, 3),   // lower curve at 31.6: sqrt(3 x 2) = 2.449: fine
+      point(0.4, 50.0, 2.2, 4),   // lower curve at 50: 3 (2/3)^(log10 5) = 2.26 > 2.2: named
+      point(0.4, 500.0, 1.0, 5),  // beyond the lower curve's rates: not judged
+  };
+  const auto bad = points_out_of_hematocrit_order(points);
+  ASSERT_EQ(bad.size(), 1u);
+  EXPECT_EQ(bad[0].point.line, 4);
+  EXPECT_EQ(bad[0].lower_phi, 0.3);
+  EXPECT_NEAR(bad[0].lower_eta_re, 3.0 * std::pow(2.0 / 3.0, std::log(5.0) / std::log(10.0)), 1e-12);
+  EXPECT_NE(bad[0].reason().find("line 4:"), std::string::npos);
+}
+
+TEST(HematocritOrder, FindsTheTwoFlaggedPointsOfTheShippedSample) {
+  const CalibrationInput input = read_calibration_input(RBCAL_SAMPLES_DIR "/kim2017_whole_blood.csv");
+  const auto bad = points_out_of_hematocrit_order(input.samples.at(0).points);
+  ASSERT_EQ(bad.size(), 2u);
+  for (const auto& b : bad) {
+    EXPECT_EQ(b.point.phi, 0.55);
+    EXPECT_GT(b.point.shear_rate, 700.0);
+    EXPECT_EQ(b.lower_phi, 0.45);
+  }
+}
