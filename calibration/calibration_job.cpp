@@ -54,6 +54,12 @@ class SampleCalibration {
         r.warnings.push_back("left out, viscosity below the lower hematocrit's (--keep-out-of-order keeps it): " +
                              bad.reason());
       }
+    const std::size_t before_rate_cut = sample.points.size();
+    std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) { return p.shear_rate < o_.min_shear_rate; });
+    if (sample.points.size() < before_rate_cut)
+      r.warnings.push_back(std::to_string(before_rate_cut - sample.points.size()) + " points below " +
+                           shown(o_.min_shear_rate) +
+                           " 1/s left out (--min-shear-rate: aggregation, which the simulations lack)");
     r.sample = sample;
     if (o_.runs("alpha")) alpha(r);
     if (o_.runs("direct")) direct(r);
@@ -148,6 +154,7 @@ std::string CalibrationJobOptions::invalid_reason() const {
     return "--method " + method + ": expected alpha, direct, mcmc or all";
   if (const std::string why = setup.invalid_reason(); !why.empty()) return why;
   if (!(phi_max > 0.0 && phi_max <= 1.0)) return "--phi-max must lie in (0, 1]";
+  if (!(min_shear_rate >= 0.0)) return "--min-shear-rate must be >= 0";
   if (!(plasma.plateau_min_shear_rate >= 0.0)) return "--plateau-min-shear-rate must be >= 0";
   if (sampler.chains < 1 || sampler.walkers < 2 || sampler.max_steps < 1)
     return "MCMC needs at least one chain, two walkers and one step";
@@ -166,6 +173,7 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"cell_radius_um", setup.cell_radius * 1e6},
           {"plateau_min_shear_rate_per_s", plasma.plateau_min_shear_rate},
           {"phi_max", phi_max},
+          {"min_shear_rate_per_s", min_shear_rate},
           {"keep_out_of_hematocrit_order", keep_out_of_hematocrit_order},
           {"seed", sampler.seed},
           {"threads", sampler.threads},

@@ -35,7 +35,7 @@ std::string command_line(const CalibrateOptions& o) {
   for (const auto& s : j.samples) line << " --sample " << s;
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? " --fit-lambda" : "") << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
-       << j.phi_max << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --chains " << j.sampler.chains << " --walkers "
+       << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --chains " << j.sampler.chains << " --walkers "
        << j.sampler.walkers << " --mcmc-max-steps " << j.sampler.max_steps
        << (j.compare.empty() ? "" : " --compare " + j.compare) << " -o " << o.report
        << (o.no_plots ? " --no-plots" : "");
@@ -72,6 +72,11 @@ void add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--phi-max", j.phi_max, "Leave out points with phi above this (the seed study used 0.4 for hardened cells)")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  c->add_option("--min-shear-rate", j.min_shear_rate,
+                "Leave out points below this shear rate [1/s]: whole blood aggregates at low shear, the "
+                "simulations do not (0 keeps all; for washed or hardened cells)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   c->add_flag("--keep-out-of-order", j.keep_out_of_hematocrit_order,
               "Keep points whose viscosity is not above the next lower hematocrit's at the same shear rate "

@@ -28,6 +28,7 @@ CalibrationJobOptions options(const std::string& method) {
   o.data_file = RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv";
   o.method = method;
   o.sampler.threads = 1;
+  o.min_shear_rate = 0.0;  // synthetic curves: no aggregation to leave out
   return o;
 }
 
@@ -84,6 +85,26 @@ TEST(CalibrationJob, RunsTheChosenMethodOnTheChosenPoints) {
 
   o.samples = {"nobody"};
   EXPECT_THROW(calibrate_samples(input, synthetic_law(), o, log), std::invalid_argument);
+}
+
+TEST(CalibrationJob, LeavesOutLowShearRatesByDefault) {
+  // Whole blood aggregates below complete disaggregation (38 1/s at 45 %, Snabre et al.
+  // 1987): by default points below 40 1/s are left out and counted in a warning.
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("direct");
+  o.min_shear_rate = CalibrationJobOptions{}.min_shear_rate;
+  EXPECT_EQ(o.min_shear_rate, 40.0);
+  o.samples = {"intact"};
+  std::ostringstream log;
+  const CalibrationReport report = calibrate_samples(input, synthetic_law(), o, log);
+  const SampleReport& r = report.samples.at(0);
+  std::size_t low = 0;
+  for (const auto& p : input.sample("intact").points) low += p.shear_rate < 40.0 ? 1 : 0;
+  ASSERT_GT(low, 0u);
+  EXPECT_EQ(r.sample.points.size(), input.sample("intact").points.size() - low);
+  for (const auto& p : r.sample.points) EXPECT_GE(p.shear_rate, 40.0);
+  EXPECT_NE(r.warnings.at(0).find(std::to_string(low) + " points below 40 1/s left out"), std::string::npos)
+      << r.warnings.at(0);
 }
 
 TEST(CalibrationJob, AMethodThatCannotRunBecomesAWarning) {
