@@ -141,6 +141,27 @@ class SampleCalibration {
   const CalibrationJobOptions& o_;
 };
 
+// The samples to calibrate: those named (every one when none is), plus the two of
+// --compare; std::invalid_argument naming the file and the known samples for a missing one.
+std::vector<const SampleData*> selected_samples(const CalibrationInput& input, const CalibrationJobOptions& o) {
+  std::vector<std::string> names = o.samples;
+  if (names.empty())
+    for (const auto& s : input.samples) names.push_back(s.name);
+  const auto compare = compared_samples(o.compare);
+  if (compare)
+    for (const std::string& n : {compare->first, compare->second})
+      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  std::vector<const SampleData*> selected;
+  for (const auto& n : names) {
+    try {
+      selected.push_back(&input.sample(n));
+    } catch (const std::out_of_range& e) {
+      throw std::invalid_argument(e.what());  // names the file and the known samples
+    }
+  }
+  return selected;
+}
+
 const SampleReport& report_of(const CalibrationReport& report, const std::string& name) {
   for (const auto& r : report.samples)
     if (r.sample.name == name) return r;
@@ -186,21 +207,8 @@ nlohmann::json CalibrationJobOptions::to_json() const {
 
 CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
                                     const CalibrationJobOptions& o, std::ostream& log) {
-  std::vector<std::string> names = o.samples;
-  if (names.empty())
-    for (const auto& s : input.samples) names.push_back(s.name);
+  const std::vector<const SampleData*> selected = selected_samples(input, o);
   const auto compare = compared_samples(o.compare);
-  if (compare)
-    for (const std::string& n : {compare->first, compare->second})
-      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
-  std::vector<const SampleData*> selected;
-  for (const auto& n : names) {
-    try {
-      selected.push_back(&input.sample(n));
-    } catch (const std::out_of_range& e) {
-      throw std::invalid_argument(e.what());  // names the file and the known samples
-    }
-  }
   log << "rbcal calibrate: " << o.data_file.string() << " (" << selected.size() << " of " << input.samples.size()
       << " samples), surrogate " << o.surrogate_file.string() << ", method " << o.method << ", lambda "
       << (o.setup.fit_lambda ? std::string("fitted") : shown(o.setup.lambda)) << "\n";
@@ -238,14 +246,7 @@ CalibrationJobResult run_calibration_job(const CalibrationJobOptions& o, std::os
     throw std::invalid_argument("surrogate file " + o.surrogate_file.string() +
            " not found; build one with `rbcal surrogate build LIBRARY -o FILE` and pass --surrogate FILE");
   const CalibrationInput input = read_calibration_input(o.data_file, o.plasma);
-  // Samples are checked before the surrogate is loaded: a typo in --sample fails at once.
-  for (const std::string& n : o.samples) {
-    try {
-      input.sample(n);
-    } catch (const std::out_of_range& e) {
-      throw std::invalid_argument(e.what());
-    }
-  }
+  selected_samples(input, o);  // a typo in --sample fails before the surrogate is loaded
   const surrogate::ViscositySurrogate model = surrogate::load_surrogate(o.surrogate_file);
   CalibrationJobResult out;
   out.report = calibrate_samples(input, model, o, log);

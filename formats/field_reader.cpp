@@ -4,16 +4,11 @@
 #include <sstream>
 
 #include "formats/format_error.hpp"
+#include "formats/short_number.hpp"
 
 namespace rbcal::formats {
 
 namespace {
-
-std::string shown(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 bool is_index(const std::string& key) {
   return !key.empty() && key.size() < 10 && key.find_first_not_of("0123456789") == std::string::npos;
@@ -77,7 +72,7 @@ double FieldReader::non_negative(const std::string& path) const {
 
 double FieldReader::in_range(const std::string& path, double lo, double hi) const {
   const double v = number(path);
-  if (!(v > lo && v < hi)) fail(path, "must be in (" + shown(lo) + ", " + shown(hi) + "), got " + shown(v));
+  if (!(v > lo && v < hi)) fail(path, "must be in (" + short_number(lo) + ", " + short_number(hi) + "), got " + short_number(v));
   return v;
 }
 
@@ -112,7 +107,7 @@ double FieldReader::number_or(const std::string& path, double fallback, double l
   if (!n) return fallback;
   if (!n->is_number()) fail(path, "must be a number");
   const double v = n->get<double>();
-  if (!(v >= lo && v <= hi)) fail(path, "must be in [" + shown(lo) + ", " + shown(hi) + "], got " + shown(v));
+  if (!(v >= lo && v <= hi)) fail(path, "must be in [" + short_number(lo) + ", " + short_number(hi) + "], got " + short_number(v));
   return v;
 }
 

@@ -1,19 +1,13 @@
 #include "formats/library_schema.hpp"
 
-#include <sstream>
-
 #include "formats/field_reader.hpp"
+#include "formats/short_number.hpp"
 
 namespace rbcal::formats {
 
 std::string case_id(double phi, double capillary_number, double viscosity_ratio) {
-  auto shown = [](double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-  };
-  return "phi" + shown(phi) + "_Ca" + shown(capillary_number) + "_lambda" + shown(viscosity_ratio);
+  return "phi" + short_number(phi) + "_Ca" + short_number(capillary_number) + "_lambda" +
+         short_number(viscosity_ratio);
 }
 
 const std::vector<SignatureField>& numerics_signature_fields() {

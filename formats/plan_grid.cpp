@@ -1,22 +1,15 @@
 #include "formats/plan_grid.hpp"
 
 #include <set>
-#include <sstream>
 
 #include "formats/field_reader.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
+#include "formats/short_number.hpp"
 
 namespace rbcal::formats {
 
 namespace {
-
-std::string shown(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 std::vector<double> axis(const FieldReader& r, const std::string& field, AxisBounds bounds) {
   const nlohmann::json& a = r.require(field);
@@ -28,8 +21,8 @@ std::vector<double> axis(const FieldReader& r, const std::string& field, AxisBou
     if (!v.is_number()) r.fail(field, what);
     const double x = v.get<double>();
     if (!(x >= bounds.lo && x <= bounds.hi))
-      r.fail(field, "values must lie in [" + shown(bounds.lo) + ", " + shown(bounds.hi) + "], got " + shown(x));
-    if (!seen.insert(x).second) r.fail(field, "value " + shown(x) + " appears twice");
+      r.fail(field, "values must lie in [" + short_number(bounds.lo) + ", " + short_number(bounds.hi) + "], got " + short_number(x));
+    if (!seen.insert(x).second) r.fail(field, "value " + short_number(x) + " appears twice");
     out.push_back(x);
   }
   return out;

@@ -75,19 +75,17 @@ void write_checkpoint(const std::string& path, const CheckpointState& s) {
   // Built in memory, then written through a temporary file and a rename: a run killed
   // while writing keeps its previous checkpoint.
   std::ostringstream out(std::ios::binary);
-  {
-    out.write(kMagic, sizeof kMagic);
-    Writer w(out);
-    w.u64(s.case_json.size());
-    out.write(s.case_json.data(), static_cast<std::streamsize>(s.case_json.size()));
-    w.u64(static_cast<std::uint64_t>(s.steps));
-    w.doubles(s.populations.data(), s.populations.size());
-    w.cells(s.positions);
-    w.cells(s.velocities);
-    w.cells(s.forces);
-    w.cells(s.indicator_positions);
-    out.write(kMagic, sizeof kMagic);  // end marker: a complete file
-  }
+  out.write(kMagic, sizeof kMagic);
+  Writer w(out);
+  w.u64(s.case_json.size());
+  out.write(s.case_json.data(), static_cast<std::streamsize>(s.case_json.size()));
+  w.u64(static_cast<std::uint64_t>(s.steps));
+  w.doubles(s.populations.data(), s.populations.size());
+  w.cells(s.positions);
+  w.cells(s.velocities);
+  w.cells(s.forces);
+  w.cells(s.indicator_positions);
+  out.write(kMagic, sizeof kMagic);  // end marker: a complete file
   formats::write_file_atomically(path, out.str());
 }
 

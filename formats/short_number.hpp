@@ -1,0 +1,16 @@
+#pragma once
+// A number as the project's files and messages print it: six significant digits, no
+// trailing zeros ("0.21", "1e-06"). Case ids (phi0.21_Ca0.1_lambda5) and field errors use it.
+#include <sstream>
+#include <string>
+
+namespace rbcal::formats {
+
+inline std::string short_number(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+}  // namespace rbcal::formats
