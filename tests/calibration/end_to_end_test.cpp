@@ -14,6 +14,7 @@
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/sample_comparison.hpp"
+#include "../scratch_path.hpp"
 
 using namespace rbcal::calibration;
 using rbcal::calibration::test_models::AnalyticViscosityModel;
@@ -45,7 +46,7 @@ TEST(EndToEnd, CsvToShearModulusByEveryMethodAndTheirRatio) {
   AnalyticViscosityModel model;
   model.relative_sd = 0.005;
   const double intact_gs = 0.553e-6, hardened_gs = 2.43e-6;
-  const fs::path path = fs::temp_directory_path() / "rbcal_calibration_end_to_end.csv";
+  const fs::path path = rbcal::testing_support::scratch_path("sample.csv");
   {
     std::ofstream out(path);
     out << "# synthetic: analytic model, lambda = 5\nsample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n\n";

@@ -10,6 +10,7 @@
 
 #include "calibration/calibration_input.hpp"
 #include "calibration/rheometer_data.hpp"
+#include "../scratch_path.hpp"
 
 using namespace rbcal::calibration;
 namespace fs = std::filesystem;
@@ -19,7 +20,7 @@ namespace {
 const char* kHeader = "sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n\n";
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "rbcal_calibration_csv_test";
+  const fs::path dir = rbcal::testing_support::scratch_path("csv");
   fs::create_directories(dir);
   const fs::path path = dir / name;
   std::ofstream(path) << text;

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "solver/membrane/stretch_fit.hpp"
+#include "../scratch_path.hpp"
 
 using namespace rbcal::solver;
 
@@ -34,7 +35,7 @@ TEST(StretchFit, RecoversTheShearModulusThatMadeTheMeasurements) {
 }
 
 TEST(StretchFit, RefusesAMalformedFileNamingLineAndField) {
-  const auto path = std::filesystem::temp_directory_path() / "rbcal_stretch_bad.csv";
+  const auto path = rbcal::testing_support::scratch_path("stretch.csv");
   {
     std::ofstream out(path);
     out << "# comment\nforce_pN,axial_um,transverse_um\n0,7.8,7.8\n50,9.1,minus\n";

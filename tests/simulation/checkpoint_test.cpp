@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "solver/simulation/shear_flow_simulation.hpp"
+#include "../scratch_path.hpp"
 
 using namespace rbcal::solver;
 
@@ -46,7 +47,7 @@ class CheckpointAtIndicatorTolerance : public ::testing::TestWithParam<double> {
 // Runs c for 40 steps straight and as 20 + checkpoint + restore + 20; expects the two to
 // agree bit for bit.
 void expect_restart_bit_identical(const SimulationCase& c) {
-  const std::string path = (std::filesystem::temp_directory_path() / "rbcal_checkpoint_test.bin").string();
+  const std::string path = rbcal::testing_support::scratch_path("checkpoint.bin").string();
   ShearFlowSimulation straight(c);
   for (int s = 0; s < 40; ++s) straight.step();
 
@@ -155,7 +156,7 @@ TEST(IndicatorTolerance, ZeroRebuildsEveryStep) {
 }
 
 TEST(Checkpoint, RefusesDamagedOrForeignFiles) {
-  const std::string path = (std::filesystem::temp_directory_path() / "rbcal_checkpoint_damaged.bin").string();
+  const std::string path = rbcal::testing_support::scratch_path("checkpoint.bin").string();
   ShearFlowSimulation sim(tiny_case());
   sim.step();
   sim.save_checkpoint(path);
