@@ -1,6 +1,8 @@
 #include "solver/membrane/triangle_mesh.hpp"
 
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -11,6 +13,18 @@ double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& 
   double six_v = 0.0;
   for (const Triangle& t : triangles) six_v += x[t[0]].dot(x[t[1]].cross(x[t[2]]));
   return six_v / 6.0;
+}
+
+double winding_number(const Vec3& p, const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
+  double omega = 0.0;
+  for (const Triangle& t : triangles) {
+    const Vec3 a = x[t[0]] - p, b = x[t[1]] - p, c = x[t[2]] - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    omega += 2.0 * std::atan2(numerator, denominator);
+  }
+  return omega / (4.0 * std::numbers::pi);
 }
 
 double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {

@@ -27,6 +27,10 @@ struct Hinge {
 double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 Vec3 vertex_centroid(const std::vector<Vec3>& x);
+// Winding number of the closed surface about p: 1 inside, 0 outside (up to round-off),
+// from the solid angles of the triangles (Van Oosterom and Strackee, IEEE Trans. Biomed.
+// Eng. 30 (1983) 125). Robust where ray casting is not: no special cases on edges.
+double winding_number(const Vec3& p, const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 
 // Axis-aligned bounding box of a point set (lo = hi = 0 for an empty set).
 struct Bounds {

@@ -18,6 +18,7 @@
 #include "solver/io/format_duration.hpp"
 #include "solver/io/vtk_writer.hpp"
 #include "solver/simulation/block_average.hpp"
+#include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
 
@@ -226,6 +227,11 @@ class CaseRun {
         {"inclination_deg_sem", angle.sem},
         {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
     };
+    // Membranes that interpenetrate at the end (the immersed boundary has no contact force).
+    const LatticeUnits& u = sim_.units();
+    const OverlapCount overlaps = count_overlaps(sim_.positions(), sim_.triangles(), u.nx, u.nz);
+    j["result"]["overlapping_nodes"] = overlaps.nodes_inside;
+    j["result"]["overlapping_cell_pairs"] = overlaps.cell_pairs;
     j["provenance"] = formats::provenance_block();
     formats::write_json_atomically(opt_.output_dir + "/result.json", j);
     return j;

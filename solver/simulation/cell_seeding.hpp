@@ -12,7 +12,10 @@
 //     axes along the streamwise z, the thin direction), a random choice of N slots is
 //     filled, each cell spun randomly about its axis (which keeps it inside its slot) and
 //     shifted randomly within the slot's slack. Neighbouring slots do not overlap, so
-//     neither do the cells. Dense suspensions start this way and shear randomises them.
+//     neither do the cells. Dense suspensions start this way and shear randomises them;
+//  3. if the grid has too few slots, hexagonal rows of discs in the x-y plane (e.g. up
+//     to phi 0.59 instead of 0.44 in the 6a x 8a x 6a box of the v2 library, Evans-Fung
+//     cells). Cells touch their neighbours there; no stage shrinks them.
 #include <cstdint>
 #include <vector>
 

@@ -1,11 +1,12 @@
 // Seeding a suspension: the target volume fraction within 0.5 % (the seed study's box),
-// no overlapping cells, deterministic for a seed, dilute and dense alike.
+// no overlapping cells, deterministic for a seed, dilute and dense (to phi 0.55) alike.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 
+#include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/cell_seeding.hpp"
 
 using namespace rbcal::solver;
@@ -94,4 +95,33 @@ TEST(CellSeeding, DeterministicForASeed) {
 TEST(CellSeeding, RefusesWhatCannotFit) {
   const TriangleMesh cell = make_biconcave_cell(320, 1.0, BiconcaveProfile::EvansFung);
   EXPECT_THROW(seed_cells(0.65, cell, {4.0, 4.0, 4.0}, 0.25, 1), std::invalid_argument);
+}
+
+
+// Beyond what the grid of slots holds (about phi 0.44 in the v2 library's 6a x 8a x 6a
+// box), hexagonal rows: phi 0.55 is reached with no membrane node inside another cell
+// (winding numbers, across the periodic seams), every cell clear of the walls.
+TEST(CellSeeding, HexagonalRowsReachPhi055WithoutOverlappingMembranes) {
+  const TriangleMesh cell = make_biconcave_cell(320, 1.0, BiconcaveProfile::EvansFung);
+  const std::array<double, 3> box = {6.0, 8.0, 6.0};
+  const double gap = 2.0 / 6.0 + 1e-6;  // two lattice spacings at N_a 6, as the simulation asks
+  const SeedingResult r = seed_cells(0.55, cell, box, gap, 1);
+  EXPECT_TRUE(r.used_slots);
+  EXPECT_NEAR(r.phi / 0.55, 1.0, 0.01);
+  std::vector<std::vector<Vec3>> x;
+  for (const auto& p : r.placements) {
+    const Eigen::Matrix3d rot = Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0,
+                                                  Vec3(p.rotation[0], p.rotation[1], p.rotation[2]).normalized())
+                                    .toRotationMatrix();
+    x.emplace_back();
+    for (const Vec3& v : cell.vertices) {
+      x.back().push_back(rot * v + Vec3(p.center[0], p.center[1], p.center[2]));
+      ASSERT_GE(x.back().back().y(), -4.0 + gap - 1e-9);
+      ASSERT_LE(x.back().back().y(), 4.0 - gap + 1e-9);
+    }
+  }
+  const OverlapCount overlaps = count_overlaps(x, cell.triangles, box[0], box[2]);
+  EXPECT_EQ(overlaps.nodes_inside, 0) << overlaps.cell_pairs << " ordered pairs of cells overlap";
+  // The grid alone holds fewer cells: below its capacity nothing changes (phi 0.41 used it).
+  EXPECT_THROW(seed_cells(0.62, cell, box, gap, 1), std::invalid_argument);
 }
