@@ -29,12 +29,13 @@ std::string interval_text(const Interval& i, double scale) {
 
 std::string SampleReport::brief_report() const {
   const SampleData& s = sample;
+  const std::string counts = format("%zu of %zu points used", s.points.size(), s.points.size() + left_out.size());
   std::string out =
       s.plasma.assumed
-          ? format("sample %s: %zu points, eta0 = %.4g +- %.2g mPa s (ASSUMED, not measured: plasma_assumed row)\n",
-                   s.name.c_str(), s.points.size(), kMilli * s.plasma.eta0, kMilli * s.plasma.standard_error)
-          : format("sample %s: %zu points, eta0 = %.4g +- %.2g mPa s (%d plateau rows)\n", s.name.c_str(),
-                   s.points.size(), kMilli * s.plasma.eta0, kMilli * s.plasma.standard_error, s.plasma.plateau_rows);
+          ? format("sample %s: %s, eta0 = %.4g +- %.2g mPa s (ASSUMED, not measured: plasma_assumed row)\n",
+                   s.name.c_str(), counts.c_str(), kMilli * s.plasma.eta0, kMilli * s.plasma.standard_error)
+          : format("sample %s: %s, eta0 = %.4g +- %.2g mPa s (%d plateau rows)\n", s.name.c_str(), counts.c_str(),
+                   kMilli * s.plasma.eta0, kMilli * s.plasma.standard_error, s.plasma.plateau_rows);
   if (alpha) {
     const auto& g = alpha->shear_modulus;
     if (g.count > 0)

@@ -41,26 +41,41 @@ class SampleCalibration {
 
   SampleReport run(SampleData sample) const {
     SampleReport r;
-    const std::size_t all_points = sample.points.size();
-    std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) { return p.phi > o_.phi_max; });
-    if (sample.points.size() < all_points)
-      r.warnings.push_back(std::to_string(all_points - sample.points.size()) + " points with phi > " +
-                           shown(o_.phi_max) + " left out (--phi-max)");
+    // Moves the points for which why(p) is not empty from the sample to r.left_out.
+    auto leave_out = [&](auto why) {
+      std::size_t count = 0;
+      std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) {
+        std::string reason = why(p);
+        if (reason.empty()) return false;
+        r.left_out.push_back({p, std::move(reason)});
+        ++count;
+        return true;
+      });
+      return count;
+    };
+    const std::string above_phi_max = "phi above " + shown(o_.phi_max) + " (--phi-max)";
+    if (const std::size_t n = leave_out([&](const auto& p) { return p.phi > o_.phi_max ? above_phi_max : ""; }))
+      r.warnings.push_back(std::to_string(n) + " points with phi > " + shown(o_.phi_max) + " left out (--phi-max)");
     if (!o_.keep_out_of_hematocrit_order)
       for (const OutOfOrderPoint& bad : points_out_of_hematocrit_order(sample.points)) {
-        std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) {
-          return p.line == bad.point.line && p.phi == bad.point.phi && p.shear_rate == bad.point.shear_rate;
+        const std::string reason = "viscosity below the lower hematocrit's (--keep-out-of-order keeps it): " + bad.reason();
+        leave_out([&](const auto& p) {
+          return p.line == bad.point.line && p.phi == bad.point.phi && p.shear_rate == bad.point.shear_rate ? reason
+                                                                                                             : "";
         });
-        r.warnings.push_back("left out, viscosity below the lower hematocrit's (--keep-out-of-order keeps it): " +
-                             bad.reason());
+        r.warnings.push_back("left out, " + reason);
       }
-    const std::size_t before_rate_cut = sample.points.size();
-    std::erase_if(sample.points, [&](const RelativeViscosityPoint& p) { return p.shear_rate < o_.min_shear_rate; });
-    if (sample.points.size() < before_rate_cut)
-      r.warnings.push_back(std::to_string(before_rate_cut - sample.points.size()) + " points below " +
-                           shown(o_.min_shear_rate) +
+    const std::string below_rate = "shear rate below " + shown(o_.min_shear_rate) +
+                                   " 1/s (--min-shear-rate: aggregation, which the simulations lack)";
+    if (const std::size_t n = leave_out([&](const auto& p) { return p.shear_rate < o_.min_shear_rate ? below_rate : ""; }))
+      r.warnings.push_back(std::to_string(n) + " points below " + shown(o_.min_shear_rate) +
                            " 1/s left out (--min-shear-rate: aggregation, which the simulations lack)");
+    leave_out_unreachable(sample, r);
     r.sample = sample;
+    if (sample.points.empty()) {
+      r.warnings.push_back("no point left that the model can reach: nothing to calibrate (see the lines above)");
+      return r;
+    }
     if (o_.runs("alpha")) alpha(r);
     if (o_.runs("direct")) direct(r);
     if (o_.runs("mcmc")) mcmc(r);
@@ -119,6 +134,24 @@ class SampleCalibration {
     } catch (const std::exception& e) {
       r.warnings.push_back(std::string("MCMC failed: ") + e.what());
     }
+  }
+
+  // Points that the model cannot reach at any G_s (calibration/model_reach.hpp) leave the
+  // fits, with one warning per phi saying by how much they miss.
+  void leave_out_unreachable(SampleData& sample, SampleReport& r) const {
+    const ReachDiagnosis d = diagnose_reach(sample.points, model_, o_.setup);
+    if (d.unreachable_groups.empty()) return;
+    std::vector<RelativeViscosityPoint> kept;
+    for (const PointReach& p : d.points) {
+      if (p.reachable())
+        kept.push_back(p.point);
+      else
+        r.left_out.push_back({p.point, "out of the model's reach: " + p.reason()});
+    }
+    sample.points = std::move(kept);
+    r.unreachable = d.unreachable_groups;
+    const surrogate::ParameterRange range = model_.range();
+    for (const ReachGroup& g : d.unreachable_groups) r.warnings.push_back("cannot be reached: " + g.line(range, o_.setup));
   }
 
   // Points the fit left out (mostly outside the surrogate's range), counted once.

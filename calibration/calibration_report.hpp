@@ -16,6 +16,7 @@
 #include "calibration/calibration_input.hpp"
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
+#include "calibration/model_reach.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 
@@ -23,8 +24,18 @@ namespace rbcal::calibration {
 
 // What one sample's calibration produced; a method that was not run (or failed) is empty and
 // its failure is one of the warnings.
+// A measured point that no method used, and why (--phi-max, hematocrit order,
+// --min-shear-rate, or out of the model's reach).
+struct LeftOutPoint {
+  RelativeViscosityPoint point;
+  std::string reason;
+};
+
 struct SampleReport {
-  SampleData sample;
+  SampleData sample;                  // the points the methods used
+  std::vector<LeftOutPoint> left_out;  // the sample's other points
+  // Points the model cannot reach at any G_s, grouped by phi (calibration/model_reach.hpp).
+  std::vector<ReachGroup> unreachable;
   std::optional<AlphaMethodResult> alpha;
   std::optional<DirectFitResult> direct;
   std::optional<McmcCalibration> mcmc;

@@ -170,6 +170,25 @@ nlohmann::json sample_summary(const SampleReport& s) {
                  {"plateau_rows", p.plateau_rows},
                  {"assumed", p.assumed}};
   j["points"] = points_json(s);
+  json left_out = json::array();
+  for (const LeftOutPoint& l : s.left_out)
+    left_out.push_back({{"line", l.point.line},
+                        {"phi", l.point.phi},
+                        {"shear_rate_per_s", l.point.shear_rate},
+                        {"eta_re", l.point.eta_re},
+                        {"reason", l.reason}});
+  j["left_out"] = left_out;
+  json unreachable = json::array();
+  for (const ReachGroup& g : s.unreachable) {
+    json group = {{"phi", g.phi}, {"verdict", to_string(g.reach)}, {"points", g.points}};
+    if (g.reach != Reach::phi_outside_model) {
+      group["measured_eta_re"] = {g.measured_min, g.measured_max};
+      group["model_eta_re"] = {g.model_min, g.model_max};
+      group["relative_gap"] = {g.gap_min, g.gap_max};
+    }
+    unreachable.push_back(group);
+  }
+  j["reach"] = {{"reachable_points", s.sample.points.size()}, {"unreachable", unreachable}};
   json methods = json::object();
   if (s.alpha) methods["alpha"] = alpha_json(*s.alpha);
   if (s.direct) methods["direct"] = direct_json(*s.direct);

@@ -99,6 +99,12 @@ int write_fits_table(const CalibrationReport& report, const std::filesystem::pat
                 number(kMilli * measured_se(p, eta0)), number(p.eta_re), number(p.eta_re_sd), "", "", "", "", "", "",
                 0, "no point-wise fit (direct and mcmc not run)");
     }
+    for (const LeftOutPoint& l : s.left_out) {
+      const RelativeViscosityPoint& p = l.point;
+      csv.row(name, p.line, number(p.phi), number(p.shear_rate), number(kMilli * measured_viscosity(p, eta0)),
+              number(kMilli * measured_se(p, eta0)), number(p.eta_re), number(p.eta_re_sd), "", "", "", "", "", "", 0,
+              csv_field("left out: " + l.reason));
+    }
   }
   return csv.close();
 }

@@ -4,5 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
-# Until calibration lands, the main job is the solver demonstration.
-./build/bin/rbcal couette
+# The main job: calibrate the shipped published sample (data/samples/kim2017_whole_blood.csv)
+# on the shipped default surrogate; the report goes to ./calibration_report.
+./build/bin/rbcal calibrate
