@@ -192,3 +192,39 @@ TEST(DirectFit, PlasmaViscosityErrorReachesTheInterval) {
   EXPECT_LE(covered, 198);
   EXPECT_LT(covered_fixed, 170);
 }
+
+// A sample without plasma rows, calibrated with an assumed plasma viscosity (a plasma_assumed
+// row, or the seed study's plateau value stated as an assumption): eta0 enters the fit as a
+// nuisance parameter with that mean and sd, so G_s's interval widens as the assumed sd grows
+// (G_s scales with eta0 through Ca = eta0 gamma_dot a / G_s) and still covers the truth. It
+// widens less and less: the absolute viscosities at four hematocrits pin eta0 themselves
+// (eta_re -> 1 as phi -> 0), measured here as 0.40, 0.43, 0.43 for the ln-width at 2, 8, 20 %.
+TEST(DirectFit, IntervalWidensWithTheAssumedPlasmaViscositysUncertainty) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  design.plasma_relative_standard_error = 0.01;  // points carry absolute viscosities
+  std::mt19937_64 rng(11);
+  const SampleData measured = test_models::synthetic_sample(model, design, rng);
+  double first_width = 0.0, last_width = 0.0;
+  for (double relative_sd : {0.02, 0.08, 0.2}) {
+    SampleData sample = measured;
+    sample.plasma.assumed = true;
+    sample.plasma.plateau_rows = 0;
+    sample.plasma.eta0 = design.plasma_viscosity;
+    sample.plasma.standard_error = relative_sd * design.plasma_viscosity;
+    for (auto& p : sample.points) {
+      p.eta_re = p.viscosity / sample.plasma.eta0;
+      p.eta_re_sd = p.eta_re * std::hypot(p.viscosity_se / p.viscosity, relative_sd);
+    }
+    const DirectFitResult fit = fit_direct(sample, model);
+    ASSERT_TRUE(fit.plasma_viscosity_fitted);
+    ASSERT_TRUE(fit.covariance_ok);
+    const double width = std::log(fit.shear_modulus_interval.upper / fit.shear_modulus_interval.lower);
+    EXPECT_GT(width, last_width) << "eta0 sd " << relative_sd;
+    if (first_width == 0.0) first_width = width;
+    EXPECT_LT(fit.shear_modulus_interval.lower, design.shear_modulus) << "eta0 sd " << relative_sd;
+    EXPECT_GT(fit.shear_modulus_interval.upper, design.shear_modulus) << "eta0 sd " << relative_sd;
+    last_width = width;
+  }
+  EXPECT_GT(last_width, 1.05 * first_width);
+}
