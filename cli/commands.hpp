@@ -14,5 +14,7 @@ void add_calibrate_command(CLI::App& app);
 void add_library_inspect_commands(CLI::App& library);
 // `generate` under the `library` sub-command.
 void add_library_generate_command(CLI::App& library);
+// `extrapolate` under the `library` sub-command.
+void add_library_extrapolate_command(CLI::App& library);
 
 }  // namespace rbcal::cli

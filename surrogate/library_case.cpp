@@ -29,7 +29,17 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
   c.wall_seconds = r.non_negative("result.wall_seconds");
 
   c.numerics_signature = formats::numerics_signature(j, source.string());
-  r.integer("numerics.N_a", 1);
+  c.nodes_per_radius = static_cast<int>(r.integer("numerics.N_a", 1));
+  if (r.find("extrapolation")) {
+    c.extrapolation_method = r.text("extrapolation.method");
+    const nlohmann::json& raw = r.require("extrapolation.raw");
+    if (!raw.is_array() || raw.empty()) r.fail("extrapolation.raw", "must be a non-empty array");
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const std::string at = "extrapolation.raw." + std::to_string(i);
+      c.raw_results.push_back({static_cast<int>(r.integer(at + ".N_a", 1)), r.positive(at + ".eta_re"),
+                               r.non_negative(at + ".eta_re_sem")});
+    }
+  }
   r.numbers("numerics.box", 3);
   r.positive("numerics.tau_out");
   r.positive("numerics.Re");

@@ -6,8 +6,16 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace rbcal::surrogate {
+
+// A case's result at one resolution, kept by an extrapolated library (resolution_extrapolation.hpp).
+struct ResolutionResult {
+  int nodes_per_radius = 0;
+  double eta_re = 0.0;
+  double eta_re_sem = 0.0;
+};
 
 struct LibraryCase {
   std::string id;                  // file stem, e.g. "phi0.20_Ca0.10_lam5"
@@ -26,6 +34,11 @@ struct LibraryCase {
   long long n_cells = 0;
   long long steps = 0;
   double wall_seconds = 0.0;
+  int nodes_per_radius = 0;        // numerics.N_a
+  // Cases of an extrapolated library (key "extrapolation"): how eta_re was obtained
+  // ("richardson" or "correction model") and the raw results it came from; empty otherwise.
+  std::string extrapolation_method;
+  std::vector<ResolutionResult> raw_results;
   // The numerics every case of one library must share (formats::numerics_signature).
   nlohmann::json numerics_signature;
 };

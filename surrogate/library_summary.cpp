@@ -37,6 +37,8 @@ LibrarySummary summarise(const SimulationLibrary& library) {
   s.root = library.root.string();
   s.case_count = library.cases.size();
   if (library.cases.empty()) return s;
+  for (const LibraryCase& c : library.cases)
+    if (!c.raw_results.empty()) s.extrapolated.push_back(c);
   const LibraryCase& c0 = library.cases.front();
   s.nominal_range = {c0.phi, c0.phi, c0.capillary_number, c0.capillary_number, c0.viscosity_ratio, c0.viscosity_ratio};
   s.phi_actual_min = s.phi_actual_max = c0.phi_actual;
@@ -119,6 +121,17 @@ std::string format_summary(const LibrarySummary& s, bool values) {
           o << "       " << (g.present ? 'x' : '.');
       }
       o << "\n";
+    }
+  }
+  if (!s.extrapolated.empty()) {
+    // Raw values per resolution next to the extrapolated one (the grid above shows the latter).
+    o << "\n  extrapolated to the continuum (raw eta_re +- sem per N_a; extrapolated +- sd; method)\n";
+    for (const LibraryCase& c : s.extrapolated) {
+      o << "  " << fmt(c.phi, "phi %-6.3g") << fmt(c.capillary_number, " Ca %-7.3g") << fmt(c.viscosity_ratio, " lambda %-6.3g");
+      for (const ResolutionResult& raw : c.raw_results)
+        o << "  N_a " << raw.nodes_per_radius << fmt(raw.eta_re, " %7.4g") << fmt(raw.eta_re_sem, " +- %-6.2g");
+      if (c.raw_results.size() == 1) o << std::string(25, ' ');
+      o << "  -> " << fmt(c.eta_re, "%7.4g") << fmt(c.eta_re_sem, " +- %-6.2g") << "  " << c.extrapolation_method << "\n";
     }
   }
   return o.str();

@@ -30,6 +30,8 @@ struct LibrarySummary {
   std::vector<GridPoint> grid_points;       // phi slowest, lambda fastest
   std::size_t missing_count = 0;
   std::size_t off_grid_count = 0;           // cases whose parameters are not on the plan's grid
+  // An extrapolated library (`rbcal library extrapolate`): every case with its raw values.
+  std::vector<LibraryCase> extrapolated;
 };
 
 LibrarySummary summarise(const SimulationLibrary& library);

@@ -1,0 +1,50 @@
+#pragma once
+// Converged eta_re from two libraries of the same design points at two resolutions
+// (issue 16, item 2): a coarse library (N_a = n_c, every point) and a fine one (N_a = n_f,
+// a subset). With h = 1 / N_a and r = n_f / n_c:
+//  - a point in both: Richardson extrapolation of order p,
+//        eta = eta_f + g (eta_f - eta_c),  g = 1 / (r^p - 1),
+//    with sd^2 = (1 + g)^2 sem_f^2 + g^2 sem_c^2 + s_p^2, where s_p, half the difference
+//    between the extrapolations of orders p and p_low, carries the uncertainty of the
+//    order itself (measured between 1 and 2 so far: docs/library.md);
+//  - a point in the coarse library only: its log correction c = ln eta - ln eta_c is
+//    predicted by a Gaussian process fitted to the corrections of the paired points (the
+//    viscosity surrogate's machinery: the mean phi (b0 + b1 ln Ca + b2 ln lambda) suits a
+//    correction that vanishes with phi), so eta = eta_c exp(c) with sd from the process
+//    and the coarse case's own error.
+// The extrapolated values feed the surrogate like any library; the raw values stay with them.
+#include <string>
+#include <vector>
+
+#include "surrogate/simulation_library.hpp"
+
+namespace rbcal::surrogate {
+
+struct ExtrapolationOptions {
+  double order = 2.0;      // p: the convergence order assumed for the estimate
+  double order_low = 1.0;  // p_low: the other end of the plausible orders (uncertainty)
+};
+
+struct ExtrapolatedCase {
+  LibraryCase coarse;
+  bool paired = false;  // a fine case exists: Richardson; otherwise the correction model
+  LibraryCase fine;     // when paired
+  double eta_re = 0.0;  // extrapolated to h = 0
+  double eta_re_sd = 0.0;
+  double log_correction = 0.0;     // ln eta_re - ln eta_re(coarse)
+  double log_correction_sd = 0.0;  // its sd (correction model) or that of the Richardson value, relative
+  std::string method() const { return paired ? "richardson" : "correction model"; }
+};
+
+// Throws std::invalid_argument (naming the libraries) if either library mixes resolutions,
+// the fine one is not finer, a fine case has no coarse twin, or fewer than 3 points are
+// paired while some are not (too few to fit the correction model).
+std::vector<ExtrapolatedCase> extrapolate_to_continuum(const SimulationLibrary& coarse, const SimulationLibrary& fine,
+                                                       const ExtrapolationOptions& options = {});
+
+// The case file of an extrapolated library: the coarse case's file with result.eta_re and
+// result.eta_re_sem replaced by the extrapolated value and its sd, and a block
+// "extrapolation" (method, orders, raw results per resolution, log correction).
+nlohmann::json extrapolated_case_json(const ExtrapolatedCase& c, const ExtrapolationOptions& options);
+
+}  // namespace rbcal::surrogate
