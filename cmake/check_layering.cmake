@@ -5,6 +5,7 @@
 #   calibration  <- surrogate, formats
 #   bench        <- solver, formats
 #   cli          <- everything
+#   python       <- calibration, surrogate, formats  (the Python module: no solver)
 # Run as: cmake -DSOURCE_DIR=... -P check_layering.cmake; fails naming file and include.
 cmake_minimum_required(VERSION 3.22)
 set(allowed_formats formats rbcal)
@@ -13,8 +14,9 @@ set(allowed_surrogate surrogate formats)
 set(allowed_calibration calibration surrogate formats)
 set(allowed_bench bench solver formats)
 set(allowed_cli cli bench calibration surrogate solver formats rbcal)
+set(allowed_python python calibration surrogate formats)
 set(violations "")
-foreach(module formats solver surrogate calibration bench cli)
+foreach(module formats solver surrogate calibration bench cli python)
   file(GLOB_RECURSE sources "${SOURCE_DIR}/${module}/*.cpp" "${SOURCE_DIR}/${module}/*.hpp")
   foreach(source IN LISTS sources)
     file(STRINGS "${source}" includes REGEX "^#include \"[a-z_]+/")

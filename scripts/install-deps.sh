@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   gnuplot-nox
   openmpi-bin  # only mpirun, for the test of `mpirun -np K rbcal library generate`; rbcal links no MPI
+  # the Python module (python/) and its tests; emcee for the side-by-side sampler benchmark
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-emcee
 )
 
 missing=()

@@ -1,0 +1,11 @@
+#pragma once
+// The parts of the Python module `rbcal`, one per concept; module.cpp puts them together.
+#include <pybind11/pybind11.h>
+
+namespace rbcal::python {
+
+void bind_surrogate(pybind11::module_& m);    // Surrogate: load, predict on NumPy arrays, range
+void bind_rheometer(pybind11::module_& m);    // read_rheometer_csv, RheometerDataError
+void bind_calibration(pybind11::module_& m);  // calibrate, Calibration, LogPosterior
+
+}  // namespace rbcal::python

@@ -1,0 +1,166 @@
+// rbcal.calibrate and what it returns: the command line's calibration job (same options,
+// same defaults, same numbers for the same seed), as plain Python objects: the per-sample
+// summaries of summary.json, MCMC chains as arrays (chains x draws x parameters), and the
+// log posterior of a sample as a callable (for other samplers, e.g. emcee).
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <sstream>
+
+#include "calibration/calibration_job.hpp"
+#include "calibration/posterior.hpp"
+#include "calibration/report_summary.hpp"
+#include "python/bindings.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace py = pybind11;
+
+namespace rbcal::python {
+
+namespace {
+
+namespace cal = rbcal::calibration;
+
+py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
+// A calibration and the model it ran on (kept alive for log_posterior).
+struct Calibration {
+  std::shared_ptr<const surrogate::ViscositySurrogate> model;
+  cal::CalibrationReport report;
+  cal::CalibrationJobOptions options;
+  std::string log;
+
+  const cal::SampleReport& sample(const std::string& name) const {
+    for (const auto& s : report.samples)
+      if (s.sample.name == name) return s;
+    throw py::key_error("no sample '" + name + "' in this calibration");
+  }
+  const cal::McmcCalibration& mcmc(const std::string& name) const {
+    const cal::SampleReport& s = sample(name);
+    if (!s.mcmc) throw py::value_error("sample '" + name + "' has no MCMC result (method, or see its warnings)");
+    return *s.mcmc;
+  }
+};
+
+// The posterior the MCMC sampled, as a callable of theta (a 1-D array).
+struct PosteriorFunction {
+  std::shared_ptr<const surrogate::ViscositySurrogate> model;
+  cal::LogPosterior posterior;
+  double operator()(const Eigen::VectorXd& theta) const {
+    if (theta.size() != posterior.dimension())
+      throw py::value_error("theta has " + std::to_string(theta.size()) + " entries, the posterior " +
+                            std::to_string(posterior.dimension()));
+    return posterior(theta);
+  }
+};
+
+Calibration calibrate(const std::string& data, const std::string& surrogate_file, const std::string& method,
+                      const std::vector<std::string>& samples, double lambda, bool fit_lambda, double cell_radius_um,
+                      double plateau_min_shear_rate, double phi_max, double min_shear_rate, bool keep_out_of_order,
+                      std::uint64_t seed, int threads, int mcmc_max_steps, int chains, int walkers,
+                      const std::string& compare, const std::string& report, bool plots) {
+  Calibration c;
+  cal::CalibrationJobOptions& o = c.options;
+  o.data_file = data;
+  o.surrogate_file = surrogate_file;
+  o.method = method;
+  o.samples = samples;
+  o.setup.lambda = lambda;
+  o.setup.fit_lambda = fit_lambda;
+  o.setup.cell_radius = cell_radius_um * 1e-6;
+  o.plasma.plateau_min_shear_rate = plateau_min_shear_rate;
+  o.phi_max = phi_max;
+  o.min_shear_rate = min_shear_rate;
+  o.keep_out_of_hematocrit_order = keep_out_of_order;
+  o.sampler.seed = seed;
+  o.sampler.threads = threads;
+  o.sampler.max_steps = mcmc_max_steps;
+  o.sampler.chains = chains;
+  o.sampler.walkers = walkers;
+  o.compare = compare;
+  o.report.plots = plots;
+  o.command_line = "rbcal.calibrate (Python)";
+  if (const std::string why = o.invalid_reason(); !why.empty()) throw py::value_error(why);
+  c.model = std::make_shared<const surrogate::ViscositySurrogate>(surrogate::load_surrogate(surrogate_file));
+  std::ostringstream log;
+  {
+    py::gil_scoped_release release;  // long MCMC runs; the C++ side touches no Python object
+    if (report.empty()) {
+      const cal::CalibrationInput input = cal::read_calibration_input(data, o.plasma);
+      c.report = cal::calibrate_samples(input, *c.model, o, log);
+    } else {
+      o.report_folder = report;
+      c.report = cal::run_calibration_job(o, log).report;
+    }
+  }
+  c.log = log.str();
+  return c;
+}
+
+}  // namespace
+
+void bind_calibration(py::module_& m) {
+  py::class_<PosteriorFunction>(m, "LogPosterior",
+                                "Log posterior of one sample's parameters theta (see parameter_names), as the MCMC "
+                                "samples it: -inf outside the prior's support")
+      .def("__call__", &PosteriorFunction::operator(), py::arg("theta"))
+      .def_property_readonly("dimension", [](const PosteriorFunction& f) { return f.posterior.dimension(); })
+      .def_property_readonly("parameter_names",
+                             [](const PosteriorFunction& f) { return f.posterior.parameter_names(); });
+
+  py::class_<Calibration>(m, "Calibration", "The result of rbcal.calibrate")
+      .def_property_readonly("samples",
+                             [](const Calibration& c) {
+                               py::list out;
+                               for (const auto& s : c.report.samples) out.append(to_python(cal::sample_summary(s)));
+                               return out;
+                             },
+                             "Per sample, the dict that summary.json holds under 'samples' (G_s in uN/m, intervals, "
+                             "diagnostics, left-out points, warnings)")
+      .def_property_readonly("log", [](const Calibration& c) { return c.log; }, "What the command line would print")
+      .def(
+          "parameter_names", [](const Calibration& c, const std::string& s) { return c.mcmc(s).mcmc.parameter_names; },
+          py::arg("sample"))
+      .def(
+          "chains",
+          [](const Calibration& c, const std::string& s) {
+            const cal::McmcResult& r = c.mcmc(s).mcmc;
+            const auto first = r.ensemble_series(0);
+            const py::ssize_t n_chains = static_cast<py::ssize_t>(first.size());
+            const py::ssize_t n_draws = n_chains ? static_cast<py::ssize_t>(first[0].size()) : 0;
+            const py::ssize_t n_params = static_cast<py::ssize_t>(r.parameter_names.size());
+            py::array_t<double> out({n_chains, n_draws, n_params});
+            auto a = out.mutable_unchecked<3>();
+            for (py::ssize_t p = 0; p < n_params; ++p) {
+              const auto series = r.ensemble_series(static_cast<int>(p));
+              for (py::ssize_t k = 0; k < n_chains; ++k)
+                for (py::ssize_t d = 0; d < n_draws; ++d) a(k, d, p) = series[k][d];
+            }
+            return out;
+          },
+          py::arg("sample"),
+          "Post-burn-in MCMC draws, chains x draws x parameters (each chain an ensemble, its walkers pooled step by "
+          "step; parameters as parameter_names, in log space)")
+      .def(
+          "log_posterior",
+          [](const Calibration& c, const std::string& s) {
+            const cal::McmcCalibration& r = c.mcmc(s);
+            return PosteriorFunction{c.model, cal::LogPosterior(*c.model, r.plasma_viscosity, r.points, r.posterior,
+                                                                r.plasma_viscosity_standard_error)};
+          },
+          py::arg("sample"), "The sample's log posterior as a callable of theta (the one its MCMC sampled)");
+
+  m.def("calibrate", &calibrate, py::arg("data"), py::arg("surrogate"), py::arg("method") = "all",
+        py::arg("samples") = std::vector<std::string>{}, py::arg("lam") = cal::kDefaultViscosityRatio,
+        py::arg("fit_lambda") = false, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
+        py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
+        py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
+        py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 16, py::arg("compare") = "",
+        py::arg("report") = "", py::arg("plots") = false,
+        "G_s of each sample in a rheometer CSV against a surrogate file, by the alpha method, the direct fit and MCMC "
+        "(the options and defaults of `rbcal calibrate`); report: also write the report folder there");
+}
+
+}  // namespace rbcal::python

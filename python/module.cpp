@@ -1,0 +1,35 @@
+// The Python module `rbcal`: the surrogate, rheometer data and the calibrations of the C++
+// library, with the same checks and messages as the command line. Errors in input files
+// raise rbcal.FormatError or rbcal.RheometerDataError (both ValueError), whose messages
+// name the file, line and field.
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "formats/format_error.hpp"
+#include "python/bindings.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// $RBCAL_DATA, the installed data, or the source tree's data/ (build-tree use).
+std::filesystem::path data_folder() {
+  if (const char* env = std::getenv("RBCAL_DATA")) return env;
+  if (std::filesystem::is_directory(RBCAL_INSTALLED_DATA)) return RBCAL_INSTALLED_DATA;
+  return RBCAL_SOURCE_DATA;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(rbcal, m) {
+  m.doc() = "rbcal: red blood cell deformability (membrane shear modulus G_s) from rheometer curves";
+  py::register_exception<rbcal::formats::FormatError>(m, "FormatError", PyExc_ValueError);
+  m.def("data_folder", [] { return data_folder().string(); },
+        "Folder of the shipped data (samples/, library/default/): $RBCAL_DATA, the installed copy or the source tree");
+  m.def("shipped_file", [](const std::string& relative) { return (data_folder() / relative).string(); },
+        py::arg("relative"), "Path of a shipped file, e.g. 'library/default/surrogate.json'");
+  rbcal::python::bind_surrogate(m);
+  rbcal::python::bind_rheometer(m);
+  rbcal::python::bind_calibration(m);
+}
