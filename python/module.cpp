@@ -32,4 +32,5 @@ PYBIND11_MODULE(rbcal, m) {
   rbcal::python::bind_surrogate(m);
   rbcal::python::bind_rheometer(m);
   rbcal::python::bind_calibration(m);
+  rbcal::python::bind_diagnostics(m);
 }
