@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Side by side: rbcal's ensemble sampler and emcee (Debian python3-emcee) on the same
+posterior, the log posterior of rbcal.calibrate called through the Python module.
+
+Posterior: a sample of tests/calibration/data/synthetic_rheometer.csv on the surrogate of
+tests/surrogate/data/tiny_library (the shipped sample cannot be calibrated on the current
+default library: no point within reach, docs/calibration.md). Two parameters (ln G_s,
+ln eta0: the plasma viscosity as nuisance parameter) as shipped, one (ln G_s) with eta0
+fixed (the sample's plasma rows rewritten with sd 0).
+
+Both samplers: one thread, the same number of walkers in all (64: rbcal 4 ensembles x 16,
+emcee one ensemble of 64), at most the same number of steps (rbcal stops earlier once
+R-hat < 1.01 and ESS >= 1000), the first half discarded. ESS of
+ln G_s by one and the same estimator for both (rbcal.chain_diagnostics: bulk ESS, walkers
+as chains). Usage (from the repository root, after the build):
+    PYTHONPATH=build/python /usr/bin/python3 bench/python/emcee_comparison.py [--steps N] [--rounds R]
+"""
+import argparse
+import os
+import pathlib
+import subprocess
+import tempfile
+import time
+
+import emcee
+import numpy as np
+
+import rbcal
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+DATA = ROOT / "tests/calibration/data/synthetic_rheometer.csv"
+
+
+def fixed_eta0_copy(folder):
+    """The same CSV with every plasma row's sd set to 0: eta0 becomes a constant."""
+    out = folder / "synthetic_fixed_eta0.csv"
+    lines = []
+    for line in DATA.read_text().splitlines():
+        fields = line.split(",")
+        if len(fields) == 7 and fields[1] == "plasma":
+            fields[5] = "0"
+        lines.append(",".join(fields))
+    out.write_text("\n".join(lines) + "\n")
+    return out
+
+
+def walker_chains(pooled, walkers):
+    """rbcal's chains (ensembles x draws pooled step by step) as one series per walker."""
+    return np.concatenate([c.reshape(-1, walkers).T for c in pooled], axis=0)
+
+
+def quantiles(x):
+    return np.quantile(x, [0.025, 0.5, 0.975])
+
+
+def run(data, surrogate, steps, seed):
+    walkers, ensembles = 16, 4
+    t0 = time.perf_counter()
+    cal = rbcal.calibrate(str(data), surrogate, method="mcmc", samples=["intact"], mcmc_max_steps=steps,
+                          chains=ensembles, walkers=walkers, threads=1, min_shear_rate=0.0, seed=seed)
+    rbcal_seconds = time.perf_counter() - t0
+    names = cal.parameter_names("intact")
+    pooled = cal.chains("intact")
+    ln_gs_rbcal = walker_chains(pooled[:, :, 0], walkers)
+    rbcal_draws = pooled[:, :, 0].ravel()
+    lp = cal.log_posterior("intact")
+
+    # emcee: 64 walkers started where rbcal's ensembles ended their burn-in's first draw.
+    start = np.concatenate([c.reshape(-1, walkers, len(names))[0] for c in pooled], axis=0)
+    sampler = emcee.EnsembleSampler(ensembles * walkers, len(names), lambda th: lp(np.ascontiguousarray(th)))
+    t0 = time.perf_counter()
+    sampler.run_mcmc(start, steps, progress=False)
+    emcee_seconds = time.perf_counter() - t0
+    chain = sampler.get_chain(discard=steps // 2)  # steps x walkers x dim
+    ln_gs_emcee = chain[:, :, 0].T
+    ess_r = rbcal.chain_diagnostics(ln_gs_rbcal)["bulk_ess"]
+    ess_e = rbcal.chain_diagnostics(ln_gs_emcee)["bulk_ess"]
+    return {
+        "parameters": len(names),
+        "rbcal_steps": pooled.shape[1] // walkers * 2, "emcee_steps": steps,
+        "rbcal_seconds": rbcal_seconds, "emcee_seconds": emcee_seconds,
+        "rbcal_ess": ess_r, "emcee_ess": ess_e,
+        "rbcal_q": quantiles(rbcal_draws), "emcee_q": quantiles(ln_gs_emcee.ravel()),
+        "sd": np.std(rbcal_draws),
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--steps", type=int, default=2000, help="steps per walker (both samplers)")
+    parser.add_argument("--rounds", type=int, default=3, help="repetitions (medians are reported)")
+    args = parser.parse_args()
+    exe = os.environ.get("RBCAL_EXE", str(ROOT / "build/bin/rbcal"))
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = pathlib.Path(tmp)
+        surrogate = str(folder / "tiny_surrogate.json")
+        subprocess.run([exe, "surrogate", "build", str(ROOT / "tests/surrogate/data/tiny_library"), "-o", surrogate],
+                       check=True, capture_output=True)
+        cases = [("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)), ("ln G_s, ln eta0", DATA)]
+        print(f"{args.steps} steps x 64 walkers, first half discarded, {args.rounds} rounds (medians), 1 thread")
+        print("| posterior | sampler | steps | seconds | bulk ESS of ln G_s | ESS / s | q2.5, q50, q97.5 of ln G_s |")
+        print("|---|---|---|---|---|---|---|")
+        for label, data in cases:
+            results = [run(data, surrogate, args.steps, seed=100 + r) for r in range(args.rounds)]
+            for who in ("rbcal", "emcee"):
+                sec = np.median([r[f"{who}_seconds"] for r in results])
+                ess = np.median([r[f"{who}_ess"] for r in results])
+                rate = np.median([r[f"{who}_ess"] / r[f"{who}_seconds"] for r in results])
+                q = results[0][f"{who}_q"]
+                n = int(np.median([r[f"{who}_steps"] for r in results]))
+                print(f"| {label} | {who} | {n} | {sec:.3f} | {ess:.0f} | {rate:.0f} | {q[0]:.4f}, {q[1]:.4f}, {q[2]:.4f} |")
+            ratio = np.median([(r["rbcal_ess"] / r["rbcal_seconds"]) / (r["emcee_ess"] / r["emcee_seconds"])
+                               for r in results])
+            r0 = results[0]
+            mc_error = r0["sd"] / np.sqrt(min(r0["rbcal_ess"], r0["emcee_ess"]))
+            print(f"|  | ratio rbcal / emcee (ESS per second) | | | | {ratio:.2f} | medians differ by "
+                  f"{abs(r0['rbcal_q'][1] - r0['emcee_q'][1]) / mc_error:.2f} Monte Carlo errors |")
+
+
+if __name__ == "__main__":
+    main()
