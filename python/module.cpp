@@ -13,10 +13,14 @@ namespace py = pybind11;
 
 namespace {
 
-// $RBCAL_DATA, the installed data, or the source tree's data/ (build-tree use).
+// $RBCAL_DATA; else the installed layout next to the module (PREFIX/lib/python3/
+// dist-packages/rbcal.so -> PREFIX/share/rbcal/data), as the command line finds it next to
+// its executable; else the source tree's data/ (the module in the build tree).
 std::filesystem::path data_folder() {
   if (const char* env = std::getenv("RBCAL_DATA")) return env;
-  if (std::filesystem::is_directory(RBCAL_INSTALLED_DATA)) return RBCAL_INSTALLED_DATA;
+  const std::filesystem::path module = py::module_::import("rbcal").attr("__file__").cast<std::string>();
+  const std::filesystem::path installed = module.parent_path() / "../../../share/rbcal/data";
+  if (std::filesystem::is_directory(installed)) return std::filesystem::weakly_canonical(installed);
   return RBCAL_SOURCE_DATA;
 }
 
