@@ -318,6 +318,10 @@ PlotOutcome write_report_plots(const CalibrationReport& report, const fs::path& 
     return out;
   }
   const ScriptBuilder b = build_plots(report, options);
+  if (b.plots().empty()) {
+    out.message = "no plots: no sample has points to fit (see its warnings)";
+    return out;
+  }
   for (const PlotBody& p : b.plots())
     for (const char* ext : {".png", ".svg"}) {
       const fs::path image = folder / (p.stem + ext);
