@@ -11,6 +11,7 @@
 #include "calibration/model_setup.hpp"
 #include "cli/commands.hpp"
 #include "surrogate/surrogate_file.hpp"
+#include "surrogate/trend_check.hpp"
 
 namespace rbcal::cli {
 
@@ -84,7 +85,8 @@ void run_predict(const SurrogatePredictOptions& o) {
 }  // namespace
 
 void add_surrogate_command(CLI::App& app) {
-  CLI::App* surrogate = app.add_subcommand("surrogate", "Gaussian-process surrogate of eta_re(phi, Ca, lambda): build, predict");
+  CLI::App* surrogate =
+      app.add_subcommand("surrogate", "Gaussian-process surrogate of eta_re(phi, Ca, lambda): build, predict, check");
   surrogate->require_subcommand(1);
 
   auto b = std::make_shared<SurrogateBuildOptions>();
@@ -103,6 +105,16 @@ void add_surrogate_command(CLI::App& app) {
   predict->add_option("--ca", p->ca, "Capillary number eta0 gamma_dot a / G_s")->required()->check(CLI::PositiveNumber);
   predict->add_option("--lambda", p->lambda, "Viscosity ratio eta1 / eta0")->capture_default_str()->check(CLI::PositiveNumber);
   predict->callback([p] { run_predict(*p); });
+
+  auto check_file = std::make_shared<std::string>();
+  CLI::App* check = surrogate->add_subcommand(
+      "check", "Physical trends over a probe grid: rises with phi, shear thinning, high-shear blood (exit 1 on failure)");
+  check->add_option("surrogate", *check_file, "Surrogate file (rbcal.surrogate/1)")->required()->check(CLI::ExistingFile);
+  check->callback([check_file] {
+    const surrogate::TrendCheck t = surrogate::check_trends(surrogate::load_surrogate(*check_file));
+    std::cout << "rbcal surrogate check: " << *check_file << "\n" << t.report();
+    if (!t.passed()) throw CLI::RuntimeError(1);
+  });
 }
 
 }  // namespace rbcal::cli
