@@ -136,7 +136,7 @@ void add_library_generate_command(CLI::App& library) {
   CLI::App* cmd = library.add_subcommand(
       "generate",
       "Run a sweep plan (schema rbcal.plan/1) into a library folder; resumable, parallel (--jobs, mpirun, --case-index)");
-  cmd->add_option("plan", o->plan_path, "Plan file: grid of phi, Ca, lambda and a base case (see data/library/)")
+  cmd->add_option("plan", o->plan_path, "Plan file: grid (or list) of phi, Ca, lambda and a base case (see data/library/)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-l,--library", o->library_dir, "Library folder (default: the plan's file name without .json)");
@@ -144,7 +144,7 @@ void add_library_generate_command(CLI::App& library) {
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--threads", o->threads, "OpenMP threads per worker (default: cores / jobs)")->check(CLI::Range(1, 4096));
   cmd->add_option("--case-index", o->case_index,
-                  "Run only this case (0-based, plan order: lambda, then Ca, then phi), e.g. $SLURM_ARRAY_TASK_ID")
+                  "Run only this case (0-based, plan order: lambda, then Ca, then phi; a listed plan: its order), e.g. $SLURM_ARRAY_TASK_ID")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--retry-failed", o->retry_failed, "Run again the cases a solver guard stopped (listed in LIB/failed/)");
   cmd->add_flag("-q,--quiet", o->quiet, "Only the summary line");

@@ -1,5 +1,6 @@
 // `rbcal library show LIB`: cases, ranges, cost and the grid of present / missing points;
 // `rbcal library propose LIB [-n K]`: the next cases where the surrogate is least sure.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -31,6 +32,21 @@ surrogate::ParameterGrid candidate_grid(const ProposeOptions& o, const surrogate
     if (o.phi.empty() || o.ca.empty() || o.lambda.empty())
       throw std::invalid_argument("library propose: a user grid needs all of --phi, --ca and --lambda");
     return {o.phi, o.ca, o.lambda};
+  }
+  if (lib.plan && lib.plan->is_listed()) {
+    // A space-filling design has no axes to refine: a regular grid over its box instead,
+    // phi linear, Ca and lambda logarithmic (9 x 9 x 5 candidates).
+    auto spaced = [](const std::vector<double>& axis, int n, bool log) {
+      const double lo = axis.front(), hi = axis.back();
+      std::vector<double> v;
+      for (int i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i) / (n - 1);
+        v.push_back(log ? lo * std::pow(hi / lo, t) : lo + (hi - lo) * t);
+      }
+      return v;
+    };
+    const surrogate::ParameterGrid& p = *lib.plan;
+    return {spaced(p.phi, 9, false), spaced(p.capillary_number, 9, true), spaced(p.viscosity_ratio, 5, true)};
   }
   if (lib.plan) return surrogate::refined(*lib.plan);
   surrogate::ParameterGrid present;

@@ -13,7 +13,11 @@ exceed 0.05 min(1, (1 + lambda) / 2) (the stability cap of the v1 library,
 docs/library.md "Time-step limit").
 
 Usage: python3 scripts/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
-writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json and OUT_DIR/n8/ID.json.
+writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json and OUT_DIR/n8/ID.json, and the same design
+as sweep plans OUT_DIR/plan_n6.json and plan_n8.json (listed points) for `rbcal library
+generate` on a larger machine. The plans cap Re exactly (max_shear_modulus_lattice 0.025
+= 0.05 / coupling interval); the case files carry Re rounded to 4 digits (a relative
+difference below 5e-4).
 """
 import json
 import math
@@ -119,6 +123,19 @@ def main():
                 with open(os.path.join(out, tier, case_id(phi, ca, lam) + ".json"), "w") as f:
                     json.dump(case_file(phi, ca, lam, n_a), f, indent=1)
                     f.write("\n")
+    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset])):
+        base = case_file(0.1, 1.0, 1.0, n_a)
+        del base["params"]["phi"], base["params"]["Ca"], base["params"]["lambda"]
+        base["numerics"]["Re"] = RE
+        del base["schema"]
+        plan = {"schema": "rbcal.plan/1",
+                "description": f"Library v2 at N_a {n_a} (issue 16): scripts/design_library_v2.py, docs/library.md",
+                "points": [list(unit_to_params(unit[i])) for i in chosen],
+                "max_shear_modulus_lattice": CAP / COUPLING_INTERVAL,
+                "base": base}
+        with open(os.path.join(out, f"plan_{tier}.json"), "w") as f:
+            json.dump(plan, f, indent=1)
+            f.write("\n")
     print(f"{len(unit)} points, {len(subset)} also at N_a 8, in {out}")
 
 

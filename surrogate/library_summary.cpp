@@ -62,24 +62,33 @@ LibrarySummary summarise(const SimulationLibrary& library) {
   s.median_relative_eta_re_sem = median(relative_sem);
 
   s.grid_from_plan = library.plan.has_value();
-  s.grid = s.grid_from_plan ? *library.plan : ParameterGrid{phis, cas, lambdas};
-  s.grid = {unique_sorted(s.grid.phi), unique_sorted(s.grid.capillary_number), unique_sorted(s.grid.viscosity_ratio)};
+  s.listed_design = s.grid_from_plan && library.plan->is_listed();
+  const ParameterGrid grid = s.grid_from_plan ? *library.plan : ParameterGrid{phis, cas, lambdas};
+  s.grid = {unique_sorted(grid.phi), unique_sorted(grid.capillary_number), unique_sorted(grid.viscosity_ratio)};
+  // Grid points phi-major, lambda fastest (the order the tables read); a listed design's in its order.
+  std::vector<PlanPoint> points;
+  if (s.listed_design) {
+    points = library.plan->listed;
+  } else {
+    for (double phi : s.grid.phi)
+      for (double ca : s.grid.capillary_number)
+        for (double lambda : s.grid.viscosity_ratio) points.push_back({phi, ca, lambda});
+  }
   std::vector<bool> matched(library.cases.size(), false);
-  for (double phi : s.grid.phi)
-    for (double ca : s.grid.capillary_number)
-      for (double lambda : s.grid.viscosity_ratio) {
-        GridPoint p{phi, ca, lambda, false};
-        for (std::size_t i = 0; i < library.cases.size(); ++i) {
-          const LibraryCase& c = library.cases[i];
-          if (close(c.phi, phi) && close(c.capillary_number, ca) && close(c.viscosity_ratio, lambda)) {
-            p.present = true;
-            p.eta_re = c.eta_re;
-            matched[i] = true;
-          }
-        }
-        if (!p.present) ++s.missing_count;
-        s.grid_points.push_back(p);
+  for (const PlanPoint& point : points) {
+    GridPoint p{point.phi, point.capillary_number, point.viscosity_ratio, false};
+    for (std::size_t i = 0; i < library.cases.size(); ++i) {
+      const LibraryCase& c = library.cases[i];
+      if (close(c.phi, p.phi) && close(c.capillary_number, p.capillary_number) &&
+          close(c.viscosity_ratio, p.viscosity_ratio)) {
+        p.present = true;
+        p.eta_re = c.eta_re;
+        matched[i] = true;
       }
+    }
+    if (!p.present) ++s.missing_count;
+    s.grid_points.push_back(p);
+  }
   s.off_grid_count = static_cast<std::size_t>(std::count(matched.begin(), matched.end(), false));
   return s;
 }
@@ -99,13 +108,23 @@ std::string format_summary(const LibrarySummary& s, bool values) {
     << " % of eta_re)\n"
     << "  wall time        " << fmt(s.total_wall_seconds, "%.1f") << " s (" << fmt(s.total_wall_seconds / 3600.0, "%.2f")
     << " h)\n"
-    << "  grid (" << (s.grid_from_plan ? "plan.json" : "values present") << ")  " << s.grid.phi.size() << " phi x "
-    << s.grid.capillary_number.size() << " Ca x " << s.grid.viscosity_ratio.size() << " lambda = " << s.grid_points.size()
-    << " points, " << s.grid_points.size() - s.missing_count << " present, " << s.missing_count << " missing";
+    << "  grid (" << (s.grid_from_plan ? "plan.json" : "values present") << ")  ";
+  if (s.listed_design)
+    o << "listed design of " << s.grid_points.size() << " points";
+  else
+    o << s.grid.phi.size() << " phi x " << s.grid.capillary_number.size() << " Ca x " << s.grid.viscosity_ratio.size()
+      << " lambda = " << s.grid_points.size() << " points";
+  o << ", " << s.grid_points.size() - s.missing_count << " present, " << s.missing_count << " missing";
   if (s.grid_from_plan) o << ", " << s.off_grid_count << " cases off the plan's grid";
   o << "\n";
+  if (s.listed_design) {
+    // One line per design point: the tables below need a grid.
+    for (const GridPoint& g : s.grid_points)
+      o << "  " << fmt(g.phi, "phi %-6.3g") << fmt(g.capillary_number, " Ca %-7.3g") << fmt(g.viscosity_ratio, " lambda %-6.3g")
+        << (g.present ? (values ? fmt(g.eta_re, "  eta_re %.4g") : std::string("  x")) : std::string("  . missing")) << "\n";
+  }
   // One table per lambda: rows phi, columns Ca; 'x' present, '.' missing.
-  const std::size_t n_ca = s.grid.capillary_number.size(), n_lambda = s.grid.viscosity_ratio.size();
+  const std::size_t n_ca = s.grid.capillary_number.size(), n_lambda = s.listed_design ? 0 : s.grid.viscosity_ratio.size();
   for (std::size_t l = 0; l < n_lambda; ++l) {
     o << "\n  lambda = " << fmt(s.grid.viscosity_ratio[l])
       << (values ? "   (eta_re, . missing)\n          " : "   (x present, . missing)\n          ");

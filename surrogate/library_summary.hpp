@@ -26,6 +26,7 @@ struct LibrarySummary {
   double median_eta_re_sem = 0.0;           // absolute
   double median_relative_eta_re_sem = 0.0;  // eta_re_sem / eta_re
   bool grid_from_plan = false;              // false: grid spanned by the cases' own values
+  bool listed_design = false;               // the plan lists its points: grid_points are those
   ParameterGrid grid;
   std::vector<GridPoint> grid_points;       // phi slowest, lambda fastest
   std::size_t missing_count = 0;

@@ -30,27 +30,26 @@ SweepPlan sweep_plan_from_json(const nlohmann::json& j, const std::string& path)
   // 0: every case keeps the base Reynolds number.
   const double max_modulus =
       r.find("max_shear_modulus_lattice") ? r.positive("max_shear_modulus_lattice") : 0.0;
-  for (double lambda : plan.viscosity_ratios)
-    for (double ca : plan.capillary_numbers)
-      for (double phi : plan.phi) {
-        nlohmann::json c = base;
-        c["params"]["phi"] = phi;
-        c["params"]["Ca"] = ca;
-        c["params"]["lambda"] = lambda;
-        // Field errors from the case reader are reported as fields of base.
-        SimulationCase spec = case_from_json(c, path + " (base)");
-        if (max_modulus > 0.0) {
-          // G_s in lattice units is proportional to Re at fixed Ca, N_a and tau_out.
-          const double modulus = max_modulus * std::min(1.0, 0.5 * (1.0 + lambda));
-          const double re_cap =
-              spec.flow.reynolds_number * modulus / derive_lattice_units(spec.flow, spec.resolution).shear_modulus;
-          if (re_cap < spec.flow.reynolds_number) {
-            c["numerics"]["Re"] = re_cap;
-            spec = case_from_json(c, path + " (base)");
-          }
-        }
-        plan.cases.push_back({formats::case_id(phi, ca, lambda), std::move(spec)});
+  for (const formats::PlanPoint& point : grid.points()) {
+    const double phi = point.phi, ca = point.capillary_number, lambda = point.viscosity_ratio;
+    nlohmann::json c = base;
+    c["params"]["phi"] = phi;
+    c["params"]["Ca"] = ca;
+    c["params"]["lambda"] = lambda;
+    // Field errors from the case reader are reported as fields of base.
+    SimulationCase spec = case_from_json(c, path + " (base)");
+    if (max_modulus > 0.0) {
+      // G_s in lattice units is proportional to Re at fixed Ca, N_a and tau_out.
+      const double modulus = max_modulus * std::min(1.0, 0.5 * (1.0 + lambda));
+      const double re_cap =
+          spec.flow.reynolds_number * modulus / derive_lattice_units(spec.flow, spec.resolution).shear_modulus;
+      if (re_cap < spec.flow.reynolds_number) {
+        c["numerics"]["Re"] = re_cap;
+        spec = case_from_json(c, path + " (base)");
       }
+    }
+    plan.cases.push_back({formats::case_id(phi, ca, lambda), std::move(spec)});
+  }
   return plan;
 }
 

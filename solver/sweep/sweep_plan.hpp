@@ -1,8 +1,8 @@
 #pragma once
-// A sweep plan: one base case and a grid of (phi, Ca, lambda); each grid point is one
+// A sweep plan: one base case and a grid (or a list) of (phi, Ca, lambda); each point is one
 // library case. File format (schema "rbcal.plan/1"):
 //   {"schema": "rbcal.plan/1", "description": "...",
-//    "grid": {"phi": [...], "Ca": [...], "lambda": [...]},
+//    "grid": {"phi": [...], "Ca": [...], "lambda": [...]}   (or "points": [[phi, Ca, lambda], ...]),
 //    "base": {cells, numerics, run, params.kb_hat: as in a case file (rbcal.case/1)},
 //    "max_shear_modulus_lattice": G (optional)}
 // With max_shear_modulus_lattice, each case's Reynolds number is lowered from the base
@@ -11,8 +11,8 @@
 // membranes, the more so the less viscous the cell's interior, which damps the membrane
 // together with the plasma (docs/library.md). This keeps the time step small only for
 // the low-Ca cases that need it.
-// Cases are ordered lambda-major, then Ca, then phi, so the index of a case (for
-// scheduler array jobs) is fixed by the plan.
+// Cases are ordered lambda-major, then Ca, then phi (a listed plan: in the file's order),
+// so the index of a case (for scheduler array jobs) is fixed by the plan.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

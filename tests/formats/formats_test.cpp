@@ -111,6 +111,41 @@ TEST(PlanGrid, OneSetOfBoundsAndDistinctValues) {
   EXPECT_NE(error_of([&] { plan_grid_from_json(bad, "p.json"); }).find("p.json: field schema"), std::string::npos);
 }
 
+// A space-filling design lists its points; the grid's order and the list's are kept by
+// points(), and a listed point obeys the same bounds, named by its index.
+TEST(PlanGrid, ListedPointsKeepTheirOrderAndObeyTheBounds) {
+  const json listed = {{"schema", kPlanSchema}, {"points", {{0.55, 3.2, 10}, {0.05, 0.01, 0.1}, {0.3, 0.1, 5}}}};
+  const ParameterGrid g = plan_grid_from_json(listed, "p.json");
+  ASSERT_TRUE(g.is_listed());
+  EXPECT_EQ(g.size(), 3u);
+  const std::vector<PlanPoint> points = g.points();
+  EXPECT_EQ(points[0].phi, 0.55);
+  EXPECT_EQ(points[1].capillary_number, 0.01);
+  EXPECT_EQ(points[2].viscosity_ratio, 5.0);
+  EXPECT_EQ(g.phi, (std::vector<double>{0.05, 0.3, 0.55}));  // the distinct values, sorted
+  json bad = listed;
+  bad["points"][1] = {0.05, 0.01, 2000};
+  EXPECT_EQ(error_of([&] { plan_grid_from_json(bad, "p.json"); }),
+            "p.json: field points.1: lambda must lie in [0.001, 1000], got 2000");
+  bad = listed;
+  bad["points"][2] = {0.55, 3.2, 10};
+  EXPECT_EQ(error_of([&] { plan_grid_from_json(bad, "p.json"); }), "p.json: field points.2: appears twice");
+  bad = listed;
+  bad["points"][0] = {0.55, 3.2};
+  EXPECT_EQ(error_of([&] { plan_grid_from_json(bad, "p.json"); }), "p.json: field points.0: must be [phi, Ca, lambda]");
+  bad = listed;
+  bad["grid"] = {{"phi", {0.1}}, {"Ca", {0.1}}, {"lambda", {5}}};
+  EXPECT_EQ(error_of([&] { plan_grid_from_json(bad, "p.json"); }),
+            "p.json: field points: a plan has a grid or points, not both");
+  // A grid's points: lambda-major, then Ca, then phi (the sweep's case order).
+  const json grid = {{"schema", kPlanSchema}, {"grid", {{"phi", {0.1, 0.2}}, {"Ca", {0.1, 1}}, {"lambda", {1, 5}}}}};
+  const std::vector<PlanPoint> order = plan_grid_from_json(grid, "p.json").points();
+  ASSERT_EQ(order.size(), 8u);
+  EXPECT_EQ(order[1].phi, 0.2);
+  EXPECT_EQ(order[2].capillary_number, 1.0);
+  EXPECT_EQ(order[4].viscosity_ratio, 5.0);
+}
+
 TEST(NumericsSignature, AbsentFieldsMeanWhatTheyMeantWhenWritten) {
   // Written before indicator_tolerance existed: the inside fraction was rebuilt every step.
   const json old_file = numerics_signature(library_case(-1.0), "old.json");

@@ -165,6 +165,22 @@ TEST(LibrarySummary, MarksPresentAndMissingPlanPoints) {
   EXPECT_NE(with_values.find("phi 0.2        .     1.5\n"), std::string::npos) << with_values;
 }
 
+// A listed design: present and missing points are those of the list, shown one per line.
+TEST(LibrarySummary, MarksPresentAndMissingPointsOfAListedDesign) {
+  const auto root = fresh_temp_folder("summary_listed");
+  write_text(root / "plan.json", R"({"schema": "rbcal.plan/1", "points": [[0.1, 0.1, 5], [0.3, 0.02, 1], [0.5, 2, 10]]})");
+  write_text(root / "cases" / "a.json", case_json(0.3, 0.02, 1.0, 0.3, 2.5, 0.01).dump());
+  const LibrarySummary s = summarise(read_library(root));
+  EXPECT_TRUE(s.listed_design);
+  ASSERT_EQ(s.grid_points.size(), 3u);
+  EXPECT_EQ(s.missing_count, 2u);
+  EXPECT_TRUE(s.grid_points[1].present);
+  const std::string text = format_summary(s, true);
+  EXPECT_NE(text.find("listed design of 3 points, 1 present, 2 missing"), std::string::npos) << text;
+  EXPECT_NE(text.find("phi 0.3    Ca 0.02    lambda 1       eta_re 2.5"), std::string::npos) << text;
+  EXPECT_NE(text.find("phi 0.5    Ca 2       lambda 10      . missing"), std::string::npos) << text;
+}
+
 TEST(LibrarySummary, RejectsPlanWithBadGrid) {
   const auto root = fresh_temp_folder("bad_plan");
   write_text(root / "plan.json", R"({"schema": "rbcal.plan/1", "grid": {"phi": [0.1, 1.5], "Ca": [0.1], "lambda": [5]}})");

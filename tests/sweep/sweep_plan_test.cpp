@@ -75,3 +75,38 @@ TEST(SweepPlan, RefusesABoxThatIsNoWholeNumberOfNodesNamingThePlan) {
         << e.what();
   }
 }
+
+// A listed plan makes one case per point, in the list's order, with the same Re cap.
+TEST(SweepPlan, AListedPlanMakesOneCasePerPointInItsOrder) {
+  const std::string path = write_plan("rbcal_plan_listed.json", "");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
+  j.erase("grid");
+  j["points"] = {{0.05, 0.1, 1}, {0.05, 0.01, 0.1}};
+  std::ofstream(path) << j.dump();
+  const SweepPlan plan = read_sweep_plan(path);
+  ASSERT_EQ(plan.cases.size(), 2u);
+  EXPECT_EQ(plan.cases[0].id, "phi0.05_Ca0.1_lambda1");
+  EXPECT_EQ(plan.cases[1].id, "phi0.05_Ca0.01_lambda0.1");
+  EXPECT_DOUBLE_EQ(plan.cases[1].spec.flow.capillary_number, 0.01);
+}
+
+// The shipped v2 plans (data/cases/library_v2/plan_n*.json, scripts/design_library_v2.py)
+// make the shipped v2 case files that the background runs use: same points, same numerics,
+// Re equal up to the case files' rounding to 4 digits.
+TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {
+  for (const std::string tier : {"n6", "n8"}) {
+    const std::string dir = std::string(RBCAL_CASES_DIR) + "/library_v2/";
+    const SweepPlan plan = read_sweep_plan(dir + "plan_" + tier + ".json");
+    EXPECT_EQ(plan.cases.size(), tier == "n6" ? 60u : 20u);
+    for (const PlannedCase& c : plan.cases) {
+      const SimulationCase file = read_case(dir + tier + "/" + c.id + ".json");
+      EXPECT_EQ(file.flow.capillary_number, c.spec.flow.capillary_number) << c.id;
+      EXPECT_EQ(file.flow.viscosity_ratio, c.spec.flow.viscosity_ratio) << c.id;
+      EXPECT_EQ(file.target_phi, c.spec.target_phi) << c.id;
+      EXPECT_EQ(file.resolution.nodes_per_radius, c.spec.resolution.nodes_per_radius) << c.id;
+      EXPECT_EQ(file.coupling_interval, c.spec.coupling_interval) << c.id;
+      EXPECT_EQ(file.window, c.spec.window) << c.id;
+      EXPECT_NEAR(file.flow.reynolds_number / c.spec.flow.reynolds_number, 1.0, 5e-4) << c.id;
+    }
+  }
+}
