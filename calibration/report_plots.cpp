@@ -88,6 +88,11 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
   const DirectFitResult* fit = s.point_fit();
   std::map<double, std::vector<const RelativeViscosityPoint*>> by_phi;
   for (const auto& p : s.sample.points) by_phi[p.phi].push_back(&p);
+  std::map<double, std::vector<const RelativeViscosityPoint*>> left_out_by_phi;  // drawn open
+  for (const auto& l : s.left_out) {
+    left_out_by_phi[l.point.phi].push_back(&l.point);
+    by_phi[l.point.phi];  // a phi with left-out points only still gets its colour
+  }
   std::string plot;
   int colour = 0;
   bool has_band = false;
@@ -123,13 +128,21 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
         rows.push_back({p->shear_rate, kMilli * eta, kMilli * se, 1.0, NAN});
       }
     }
+    for (const RelativeViscosityPoint* p : left_out_by_phi[phi]) {
+      const double eta = p->viscosity > 0.0 ? p->viscosity : p->eta_re * s.sample.plasma.eta0;
+      const double se = p->viscosity > 0.0 ? p->viscosity_se : p->eta_re_sd * s.sample.plasma.eta0;
+      rows.push_back({p->shear_rate, kMilli * eta, kMilli * se, 0.0, NAN});
+    }
     std::sort(rows.begin(), rows.end());
     const std::string data = b.block(id + "_data", rows);
     if (fit)
       plot += data + " using 1:5 with lines" + lt + " dt 2 lw 1.5 notitle, \\\n  ";
-    plot += data + " using 1:($4 > 0 ? $2 : NaN):3 with yerrorbars" + lt + " pt 7 ps 0.8 title " +
-            quoted(phi_text) + ", \\\n  ";
-    plot += data + " using 1:($4 > 0 ? NaN : $2):3 with yerrorbars" + lt + " pt 6 ps 0.8 notitle, \\\n  ";
+    // The phi's title goes with whichever symbol it has (all its points may be left out).
+    const bool any_used = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r[3] > 0.0; });
+    plot += data + " using 1:($4 > 0 ? $2 : NaN):3 with yerrorbars" + lt + " pt 7 ps 0.8 " +
+            (any_used ? "title " + quoted(phi_text) : std::string("notitle")) + ", \\\n  ";
+    plot += data + " using 1:($4 > 0 ? NaN : $2):3 with yerrorbars" + lt + " pt 6 ps 0.8 " +
+            (any_used ? std::string("notitle") : "title " + quoted(phi_text)) + ", \\\n  ";
   }
   if (plot.empty()) return;
   // One legend entry per line style instead of one per phi and style.
@@ -140,7 +153,7 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
   if (fit)
     plot += std::string("keyentry with lines lc \"black\" dt 2 title ") + (s.direct ? "\"direct fit\"" : "\"MCMC start fit\"") +
             ", \\\n  ";
-  plot += "keyentry with points lc \"black\" pt 6 title \"not fitted (outside the model)\", \\\n  ";
+  plot += "keyentry with points lc \"black\" pt 6 title \"not fitted (left out: fits.csv says why)\", \\\n  ";
   plot.erase(plot.size() - 6);  // the last ", \\\n  "
   b.add({stem + "_fit", header(s.sample.name + ": suspension viscosity, fit and band per phi") +
                             "set logscale xy\nset xlabel \"shear rate [1/s]\"\n"
