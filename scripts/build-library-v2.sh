@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The v2 library from its background runs, in one go (issue 16; docs/library.md):
+#   1. gather the finished runs into data/library/v2/n6 and n8 (scripts/collect-library.sh);
+#   2. extrapolate to the continuum into data/library/v2/converged (rbcal library extrapolate,
+#      P_LOW sets --order-low, default 1);
+#   3. build its surrogate and check its trends (rbcal surrogate build / check).
+# Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
+# It does not touch data/library/default/: swapping the default is a separate, reviewed step.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs="${1:-/work/runs/library_v2}"
+rbcal=./build/bin/rbcal
+lib=data/library/v2
+for tier in n6 n8; do
+  [ -d "$runs/$tier" ] && bash scripts/collect-library.sh "$runs/$tier" "$lib/$tier"
+done
+n6=$(ls "$lib/n6/cases/"*.json 2>/dev/null | wc -l)
+n8=$(ls "$lib/n8/cases/"*.json 2>/dev/null | wc -l)
+echo "v2: $n6 case(s) at N_a 6, $n8 at N_a 8"
+if [ "$n8" -lt 3 ]; then
+  echo "fewer than 3 cases at N_a 8: no extrapolation yet"
+  exit 0
+fi
+"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order-low "${P_LOW:-1}"
+"$rbcal" surrogate build "$lib/converged"
+"$rbcal" surrogate check "$lib/converged/surrogate.json" || echo "trend check FAILED (see above)"
