@@ -14,8 +14,9 @@ lib=data/library/v2
 for tier in n6 n8; do
   [ -d "$runs/$tier" ] && bash scripts/collect-library.sh "$runs/$tier" "$lib/$tier"
 done
-n6=$(ls "$lib/n6/cases/"*.json 2>/dev/null | wc -l)
-n8=$(ls "$lib/n8/cases/"*.json 2>/dev/null | wc -l)
+count() { if [ -d "$1" ]; then find "$1" -name "*.json" | wc -l; else echo 0; fi; }
+n6=$(count "$lib/n6/cases")
+n8=$(count "$lib/n8/cases")
 echo "v2: $n6 case(s) at N_a 6, $n8 at N_a 8"
 if [ "$n8" -lt 3 ]; then
   echo "fewer than 3 cases at N_a 8: no extrapolation yet"
