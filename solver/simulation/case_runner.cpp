@@ -51,10 +51,6 @@ class StopOnSignals {
   void (*term_)(int);
 };
 
-// Nodes x triangles per cell above which the end-of-run overlap count is skipped (the
-// v2 library's N_a 8, phi 0.55 cases: 65,000 x 1280 = 8e7).
-constexpr double kLargestOverlapCount = 4e8;
-
 // The samples inside the averaging window, per observable.
 struct WindowSamples {
   std::array<double, 2> window;
@@ -232,19 +228,10 @@ class CaseRun {
         {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
     };
     // Membranes that interpenetrate at the end (the immersed boundary has no contact force).
-    // The count costs winding numbers over a neighbour's triangles per node: seconds for
-    // library cases, an hour for the seed study's box, which gets null instead.
     const LatticeUnits& u = sim_.units();
-    const double nodes =
-        sim_.positions().empty() ? 0.0 : static_cast<double>(sim_.positions().size()) * sim_.positions()[0].size();
-    if (nodes * static_cast<double>(sim_.triangles().size()) <= kLargestOverlapCount) {
-      const OverlapCount overlaps = count_overlaps(sim_.positions(), sim_.triangles(), u.nx, u.nz);
-      j["result"]["overlapping_nodes"] = overlaps.nodes_inside;
-      j["result"]["overlapping_cell_pairs"] = overlaps.cell_pairs;
-    } else {
-      j["result"]["overlapping_nodes"] = nullptr;
-      j["result"]["overlapping_cell_pairs"] = nullptr;
-    }
+    const OverlapCount overlaps = count_overlaps(sim_.positions(), sim_.triangles(), u.nx, u.nz);
+    j["result"]["overlapping_nodes"] = overlaps.nodes_inside;
+    j["result"]["overlapping_cell_pairs"] = overlaps.cell_pairs;
     j["provenance"] = formats::provenance_block();
     formats::write_json_atomically(opt_.output_dir + "/result.json", j);
     return j;
