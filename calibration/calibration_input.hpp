@@ -26,6 +26,16 @@ struct RelativeViscosityPoint {
   int line = 0;               // source line, 0 for synthetic points
 };
 
+// The measured viscosity of a point [Pa s]: as read, or eta_re eta0 for points given as eta_re.
+inline double measured_viscosity(const RelativeViscosityPoint& p, double eta0) {
+  return p.viscosity > 0.0 ? p.viscosity : p.eta_re * eta0;
+}
+
+// Its standard error [Pa s]: sd / sqrt(n) as read, or eta_re_sd eta0 (which holds eta0's error too).
+inline double measured_se(const RelativeViscosityPoint& p, double eta0) {
+  return p.viscosity > 0.0 ? p.viscosity_se : p.eta_re_sd * eta0;
+}
+
 struct SampleData {
   std::string name;
   PlasmaViscosity plasma;

@@ -1,7 +1,6 @@
 #include "calibration/calibration_job.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
+#include "formats/short_number.hpp"
 #include "surrogate/surrogate_file.hpp"
 
 namespace rbcal::calibration {
@@ -21,11 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string shown(double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.4g", x);
-  return buffer;
-}
+std::string shown(double x) { return formats::short_number(x, 4); }
 
 std::optional<std::pair<std::string, std::string>> compared_samples(const std::string& compare) {
   if (compare.empty()) return std::nullopt;

@@ -5,20 +5,17 @@
 #include <map>
 #include <sstream>
 
+#include "formats/short_number.hpp"
+
 namespace rbcal::calibration {
 
 namespace {
 
 constexpr int kCaSamples = 48, kLambdaSamples = 9;
 
-std::string number(double v, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
+std::string number(double v) { return formats::short_number(v, 3); }
 
-std::string percent(double gap) { return number(std::abs(100.0 * gap), 2) + " %"; }
+std::string percent(double gap) { return formats::short_number(std::abs(100.0 * gap), 2) + " %"; }
 
 // Smallest and largest model eta_re (with the sd at each) at phi over the scanned range.
 struct Extremes {

@@ -12,6 +12,7 @@
 
 #include "calibration/quantiles.hpp"
 #include "calibration/report_tables.hpp"
+#include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
 
@@ -22,11 +23,7 @@ namespace fs = std::filesystem;
 constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
-std::string num(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", x);
-  return buffer;
-}
+std::string num(double x) { return formats::short_number(x, 9); }
 
 // For legends: four significant digits.
 std::string short_num(double x) {
@@ -113,26 +110,20 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
     }
     // Data (filled: used by the fit, open: skipped) and the point-wise fit, by shear rate.
     std::vector<std::vector<double>> rows;
+    const double eta0 = s.sample.plasma.eta0;
+    auto add_row = [&](const RelativeViscosityPoint& p, bool used, double predicted) {
+      rows.push_back({p.shear_rate, kMilli * measured_viscosity(p, eta0), kMilli * measured_se(p, eta0),
+                      used ? 1.0 : 0.0, predicted});
+    };
     if (fit) {
-      for (const FittedPoint& f : fit->points) {
-        if (f.point.phi != phi) continue;
-        const double eta = f.point.viscosity > 0.0 ? f.point.viscosity : f.point.eta_re * s.sample.plasma.eta0;
-        const double se = f.point.viscosity > 0.0 ? f.point.viscosity_se : f.point.eta_re_sd * s.sample.plasma.eta0;
-        const double predicted = f.predicted_eta_re > 0.0 ? kMilli * fit->plasma_viscosity * f.predicted_eta_re : NAN;
-        rows.push_back({f.point.shear_rate, kMilli * eta, kMilli * se, f.used ? 1.0 : 0.0, predicted});
-      }
+      for (const FittedPoint& f : fit->points)
+        if (f.point.phi == phi)
+          add_row(f.point, f.used,
+                  f.predicted_eta_re > 0.0 ? kMilli * fit->plasma_viscosity * f.predicted_eta_re : NAN);
     } else {
-      for (const RelativeViscosityPoint* p : points) {
-        const double eta = p->viscosity > 0.0 ? p->viscosity : p->eta_re * s.sample.plasma.eta0;
-        const double se = p->viscosity > 0.0 ? p->viscosity_se : p->eta_re_sd * s.sample.plasma.eta0;
-        rows.push_back({p->shear_rate, kMilli * eta, kMilli * se, 1.0, NAN});
-      }
+      for (const RelativeViscosityPoint* p : points) add_row(*p, true, NAN);
     }
-    for (const RelativeViscosityPoint* p : left_out_by_phi[phi]) {
-      const double eta = p->viscosity > 0.0 ? p->viscosity : p->eta_re * s.sample.plasma.eta0;
-      const double se = p->viscosity > 0.0 ? p->viscosity_se : p->eta_re_sd * s.sample.plasma.eta0;
-      rows.push_back({p->shear_rate, kMilli * eta, kMilli * se, 0.0, NAN});
-    }
+    for (const RelativeViscosityPoint* p : left_out_by_phi[phi]) add_row(*p, false, NAN);
     std::sort(rows.begin(), rows.end());
     const std::string data = b.block(id + "_data", rows);
     if (fit)

@@ -46,16 +46,6 @@ class CsvFile {
   int rows_ = 0;
 };
 
-// The measured viscosity of a point [Pa s]: as read, or eta_re eta0 for points given as eta_re.
-double measured_viscosity(const RelativeViscosityPoint& p, double eta0) {
-  return p.viscosity > 0.0 ? p.viscosity : p.eta_re * eta0;
-}
-
-// Its standard error [Pa s]: sd / sqrt(n) as read, or eta_re_sd eta0 (which holds eta0's error too).
-double measured_se(const RelativeViscosityPoint& p, double eta0) {
-  return p.viscosity > 0.0 ? p.viscosity_se : p.eta_re_sd * eta0;
-}
-
 }  // namespace
 
 std::string csv_field(const std::string& text) {
@@ -80,6 +70,11 @@ int write_fits_table(const CalibrationReport& report, const std::filesystem::pat
   for (const SampleReport& s : report.samples) {
     const std::string name = csv_field(s.sample.name);
     const double eta0 = s.sample.plasma.eta0;
+    auto unpredicted_row = [&](const RelativeViscosityPoint& p, const std::string& reason) {
+      csv.row(name, p.line, number(p.phi), number(p.shear_rate), number(kMilli * measured_viscosity(p, eta0)),
+              number(kMilli * measured_se(p, eta0)), number(p.eta_re), number(p.eta_re_sd), "", "", "", "", "", "", 0,
+              csv_field(reason));
+    };
     if (const DirectFitResult* fit = s.point_fit()) {
       // Predictions at the fit's eta0 (fitted as a nuisance parameter, or the plateau value).
       for (const FittedPoint& f : fit->points) {
@@ -95,16 +90,9 @@ int write_fits_table(const CalibrationReport& report, const std::filesystem::pat
       }
     } else {
       for (const RelativeViscosityPoint& p : s.sample.points)
-        csv.row(name, p.line, number(p.phi), number(p.shear_rate), number(kMilli * measured_viscosity(p, eta0)),
-                number(kMilli * measured_se(p, eta0)), number(p.eta_re), number(p.eta_re_sd), "", "", "", "", "", "",
-                0, "no point-wise fit (direct and mcmc not run)");
+        unpredicted_row(p, "no point-wise fit (direct and mcmc not run)");
     }
-    for (const LeftOutPoint& l : s.left_out) {
-      const RelativeViscosityPoint& p = l.point;
-      csv.row(name, p.line, number(p.phi), number(p.shear_rate), number(kMilli * measured_viscosity(p, eta0)),
-              number(kMilli * measured_se(p, eta0)), number(p.eta_re), number(p.eta_re_sd), "", "", "", "", "", "", 0,
-              csv_field("left out: " + l.reason));
-    }
+    for (const LeftOutPoint& l : s.left_out) unpredicted_row(l.point, "left out: " + l.reason);
   }
   return csv.close();
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "calibration/calibration_job.hpp"
+#include "calibration/chain_diagnostics.hpp"
 #include "calibration/posterior.hpp"
 #include "calibration/report_summary.hpp"
 #include "python/bindings.hpp"
@@ -127,17 +128,17 @@ void bind_calibration(py::module_& m) {
           "chains",
           [](const Calibration& c, const std::string& s) {
             const cal::McmcResult& r = c.mcmc(s).mcmc;
-            const auto first = r.ensemble_series(0);
-            const py::ssize_t n_chains = static_cast<py::ssize_t>(first.size());
-            const py::ssize_t n_draws = n_chains ? static_cast<py::ssize_t>(first[0].size()) : 0;
-            const py::ssize_t n_params = static_cast<py::ssize_t>(r.parameter_names.size());
+            std::vector<cal::ChainSet> series;  // per parameter: chains x draws
+            for (std::size_t p = 0; p < r.parameter_names.size(); ++p)
+              series.push_back(r.ensemble_series(static_cast<int>(p)));
+            const py::ssize_t n_chains = static_cast<py::ssize_t>(series[0].size());
+            const py::ssize_t n_draws = n_chains ? static_cast<py::ssize_t>(series[0][0].size()) : 0;
+            const py::ssize_t n_params = static_cast<py::ssize_t>(series.size());
             py::array_t<double> out({n_chains, n_draws, n_params});
             auto a = out.mutable_unchecked<3>();
-            for (py::ssize_t p = 0; p < n_params; ++p) {
-              const auto series = r.ensemble_series(static_cast<int>(p));
+            for (py::ssize_t p = 0; p < n_params; ++p)
               for (py::ssize_t k = 0; k < n_chains; ++k)
-                for (py::ssize_t d = 0; d < n_draws; ++d) a(k, d, p) = series[k][d];
-            }
+                for (py::ssize_t d = 0; d < n_draws; ++d) a(k, d, p) = series[p][k][d];
             return out;
           },
           py::arg("sample"),

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
 #include <sstream>
+
+#include "formats/short_number.hpp"
 
 namespace rbcal::surrogate {
 
@@ -21,11 +22,7 @@ std::vector<double> probe(double lo, double hi, int n, bool log, double min, dou
   return {values.begin(), values.end()};
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string number(double v) { return formats::short_number(v, 3); }
 
 std::string worst(const std::vector<TrendViolation>& v, const char* axis) {
   if (v.empty()) return "";

@@ -17,14 +17,20 @@ struct Box3 {
   Vec3 lo, hi;
 };
 
-Box3 cell_box(const TriangleMesh& m, const CellPlacement& p) {
+// The vertices of mesh m rotated and moved as the placement says.
+std::vector<Vec3> placed(const TriangleMesh& m, const CellPlacement& p) {
   const Eigen::Matrix3d rot =
       Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0,
                         Vec3(p.rotation[0], p.rotation[1], p.rotation[2]).normalized())
           .toRotationMatrix();
+  std::vector<Vec3> x;
+  for (const Vec3& v : m.vertices) x.push_back(rot * v + Vec3(p.center[0], p.center[1], p.center[2]));
+  return x;
+}
+
+Box3 cell_box(const TriangleMesh& m, const CellPlacement& p) {
   Box3 b{Vec3::Constant(1e300), Vec3::Constant(-1e300)};
-  for (const Vec3& v : m.vertices) {
-    const Vec3 q = rot * v + Vec3(p.center[0], p.center[1], p.center[2]);
+  for (const Vec3& q : placed(m, p)) {
     b.lo = b.lo.cwiseMin(q);
     b.hi = b.hi.cwiseMax(q);
   }
@@ -110,14 +116,10 @@ TEST(CellSeeding, HexagonalRowsReachPhi055WithoutOverlappingMembranes) {
   EXPECT_NEAR(r.phi / 0.55, 1.0, 0.01);
   std::vector<std::vector<Vec3>> x;
   for (const auto& p : r.placements) {
-    const Eigen::Matrix3d rot = Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0,
-                                                  Vec3(p.rotation[0], p.rotation[1], p.rotation[2]).normalized())
-                                    .toRotationMatrix();
-    x.emplace_back();
-    for (const Vec3& v : cell.vertices) {
-      x.back().push_back(rot * v + Vec3(p.center[0], p.center[1], p.center[2]));
-      ASSERT_GE(x.back().back().y(), -4.0 + gap - 1e-9);
-      ASSERT_LE(x.back().back().y(), 4.0 - gap + 1e-9);
+    x.push_back(placed(cell, p));
+    for (const Vec3& q : x.back()) {
+      ASSERT_GE(q.y(), -4.0 + gap - 1e-9);
+      ASSERT_LE(q.y(), 4.0 - gap + 1e-9);
     }
   }
   const OverlapCount overlaps = count_overlaps(x, cell.triangles, box[0], box[2]);
