@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "formats/json_file.hpp"
@@ -18,6 +19,7 @@ namespace {
 struct ExtrapolateOptions {
   std::string coarse, fine, output;
   surrogate::ExtrapolationOptions extrapolation;
+  std::vector<double> scatter_phi;  // --scatter-phi LOW,HIGH
 };
 
 void run_extrapolate(const ExtrapolateOptions& o) {
@@ -30,6 +32,9 @@ void run_extrapolate(const ExtrapolateOptions& o) {
   std::printf("rbcal library extrapolate: %zu points from %s (N_a %d) and %s (N_a %d), order %g (uncertainty from %g)\n",
               cases.size(), o.coarse.c_str(), coarse.cases.front().nodes_per_radius, o.fine.c_str(),
               fine.cases.front().nodes_per_radius, o.extrapolation.order, o.extrapolation.order_low);
+  if (o.extrapolation.scatter_floor > 0.0)
+    std::printf("  seed-scatter floor: relative sd %g at phi >= %g, none at phi <= %g, linear between\n",
+                o.extrapolation.scatter_floor, o.extrapolation.scatter_phi_high, o.extrapolation.scatter_phi_low);
   std::printf("  %-32s %10s %10s %16s  %s\n", "case", "coarse", "fine", "extrapolated", "method");
   for (const auto& c : cases) {
     formats::write_json_atomically(cases_dir / (c.coarse.id + ".json"), surrogate::extrapolated_case_json(c, o.extrapolation));
@@ -62,7 +67,23 @@ void add_library_extrapolate_command(CLI::App& library) {
                   "Other plausible order: half the difference of the two extrapolations enters the sd")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->callback([o] { run_extrapolate(*o); });
+  cmd->add_option("--scatter-floor", o->extrapolation.scatter_floor,
+                  "Relative sd added in quadrature to each dense run's error (seed scatter of its window mean)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--scatter-phi", o->scatter_phi,
+                  "phi where the scatter floor starts and where it reaches its full value")
+      ->delimiter(',')
+      ->expected(2);
+  cmd->callback([o] {
+    if (o->scatter_phi.size() == 2) {
+      if (!(o->scatter_phi[0] <= o->scatter_phi[1]))
+        throw CLI::ValidationError("--scatter-phi", "give LOW,HIGH with LOW <= HIGH");
+      o->extrapolation.scatter_phi_low = o->scatter_phi[0];
+      o->extrapolation.scatter_phi_high = o->scatter_phi[1];
+    }
+    run_extrapolate(*o);
+  });
 }
 
 }  // namespace rbcal::cli

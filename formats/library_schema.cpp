@@ -23,6 +23,8 @@ const std::vector<SignatureField>& numerics_signature_fields() {
       {"numerics.indicator_tolerance", json(0.0)},
       {"numerics.coupling_interval", json(1)},
       {"numerics.volume_stiffness", json(0.0)},
+      {"numerics.contact_range", json(0.0)},
+      {"numerics.contact_strength", json(0.0)},
       {"cells.triangles", std::nullopt},
       {"cells.shape", std::nullopt},
       {"cells.law", std::nullopt},

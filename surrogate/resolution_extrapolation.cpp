@@ -1,5 +1,6 @@
 #include "surrogate/resolution_extrapolation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -32,6 +33,13 @@ double richardson(double fine, double coarse, double ratio, double order) {
 
 }  // namespace
 
+double error_with_scatter_floor(const LibraryCase& c, const ExtrapolationOptions& options) {
+  const double span = options.scatter_phi_high - options.scatter_phi_low;
+  const double weight = span > 0.0 ? std::clamp((c.phi - options.scatter_phi_low) / span, 0.0, 1.0)
+                                   : (c.phi >= options.scatter_phi_high ? 1.0 : 0.0);
+  return std::hypot(c.eta_re_sem, weight * options.scatter_floor * c.eta_re);
+}
+
 std::vector<ExtrapolatedCase> extrapolate_to_continuum(const SimulationLibrary& coarse, const SimulationLibrary& fine,
                                                        const ExtrapolationOptions& options) {
   const int n_c = common_resolution(coarse), n_f = common_resolution(fine);
@@ -40,6 +48,7 @@ std::vector<ExtrapolatedCase> extrapolate_to_continuum(const SimulationLibrary& 
                                 coarse.root.string() + " (N_a " + std::to_string(n_c) + ")");
   if (!(options.order > 0.0 && options.order_low > 0.0))
     throw std::invalid_argument("extrapolation orders must be positive");
+  if (!(options.scatter_floor >= 0.0)) throw std::invalid_argument("the scatter floor must not be negative");
   const double ratio = static_cast<double>(n_f) / n_c;
   std::map<Key, const LibraryCase*> fine_at;
   for (const LibraryCase& f : fine.cases) fine_at[key_of(f)] = &f;
@@ -49,23 +58,25 @@ std::vector<ExtrapolatedCase> extrapolate_to_continuum(const SimulationLibrary& 
   for (const LibraryCase& c : coarse.cases) {
     ExtrapolatedCase e;
     e.coarse = c;
+    const double sem_c = error_with_scatter_floor(c, options);  // the raw cases keep their own
     const auto it = fine_at.find(key_of(c));
     if (it != fine_at.end()) {
       const LibraryCase& f = *it->second;
+      const double sem_f = error_with_scatter_floor(f, options);
       fine_at.erase(it);
       e.paired = true;
       e.fine = f;
       const double g = 1.0 / (std::pow(ratio, options.order) - 1.0);
       e.eta_re = richardson(f.eta_re, c.eta_re, ratio, options.order);
       const double order_spread = 0.5 * (richardson(f.eta_re, c.eta_re, ratio, options.order_low) - e.eta_re);
-      e.eta_re_sd = std::sqrt(std::pow((1.0 + g) * f.eta_re_sem, 2) + std::pow(g * c.eta_re_sem, 2) +
+      e.eta_re_sd = std::sqrt(std::pow((1.0 + g) * sem_f, 2) + std::pow(g * sem_c, 2) +
                               order_spread * order_spread);
       if (!(e.eta_re > 0.0))
         throw std::invalid_argument("case " + c.id + ": Richardson gives eta_re " + std::to_string(e.eta_re) +
                                     " (N_a " + std::to_string(n_c) + ": " + std::to_string(c.eta_re) + ", N_a " +
                                     std::to_string(n_f) + ": " + std::to_string(f.eta_re) + ")");
       e.log_correction = std::log(e.eta_re / c.eta_re);
-      const double relative_c = c.eta_re_sem / c.eta_re;
+      const double relative_c = sem_c / c.eta_re;
       e.log_correction_sd = std::sqrt(std::pow(e.eta_re_sd / e.eta_re, 2) + relative_c * relative_c);
       TrainingCase t = training_case(c);
       t.ln_eta_re = e.log_correction;
@@ -93,7 +104,7 @@ std::vector<ExtrapolatedCase> extrapolate_to_continuum(const SimulationLibrary& 
       e.log_correction = ln_correction;
       e.log_correction_sd = sd;
       e.eta_re = c.eta_re * std::exp(ln_correction);
-      e.eta_re_sd = e.eta_re * std::hypot(sd, c.eta_re_sem / c.eta_re);
+      e.eta_re_sd = e.eta_re * std::hypot(sd, error_with_scatter_floor(c, options) / c.eta_re);
     }
   }
   return out;
@@ -110,6 +121,8 @@ nlohmann::json extrapolated_case_json(const ExtrapolatedCase& c, const Extrapola
   j["extrapolation"] = {{"method", c.method()},
                         {"order", options.order},
                         {"order_low", options.order_low},
+                        {"scatter_floor", options.scatter_floor},
+                        {"scatter_phi", {options.scatter_phi_low, options.scatter_phi_high}},
                         {"raw", raw},
                         {"log_correction", c.log_correction},
                         {"log_correction_sd", c.log_correction_sd}};

@@ -23,7 +23,17 @@ namespace rbcal::surrogate {
 struct ExtrapolationOptions {
   double order = 2.0;      // p: the convergence order assumed for the estimate
   double order_low = 1.0;  // p_low: the other end of the plausible orders (uncertainty)
+  // Seed scatter: dense suspensions fluctuate slowly, so one run's blocking error
+  // understates the error of its window mean (seed twins, docs/library.md). Each raw
+  // case's sem is raised to hypot(sem, s(phi) eta_re), with the relative floor s rising
+  // linearly from 0 at phi <= scatter_phi_low to scatter_floor at phi >= scatter_phi_high.
+  double scatter_floor = 0.0;
+  double scatter_phi_low = 0.21;
+  double scatter_phi_high = 0.41;
 };
+
+// The raw case's standard error with the seed-scatter floor of `options` (see above).
+double error_with_scatter_floor(const LibraryCase& c, const ExtrapolationOptions& options);
 
 struct ExtrapolatedCase {
   LibraryCase coarse;

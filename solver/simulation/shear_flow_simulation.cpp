@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
+#include "solver/simulation/cell_contact.hpp"
 #include "solver/simulation/cell_seeding.hpp"
 #include "solver/simulation/checkpoint.hpp"
 
@@ -163,6 +164,9 @@ void ShearFlowSimulation::step() {
   if (fluid_.steps_done() % interval == 0) {
     compute_membrane_forces();
     lap(timings_.membrane_forces);
+    add_contact_forces(x_, case_.contact_range, case_.contact_strength * units_.shear_modulus, units_.nx,
+                       units_.nz, f_);
+    lap(timings_.contact);
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     lap(timings_.ordering);
     fluid_.clear_force();

@@ -35,6 +35,7 @@ struct CellObservables {
 // Wall-clock seconds spent in each part of step(), accumulated since the last reset.
 struct StepTimings {
   double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
+  double contact = 0.0;          // repulsion between cells (numerics.contact_range)
   double ordering = 0.0;         // sorting the nodes by stencil (order_nodes)
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field

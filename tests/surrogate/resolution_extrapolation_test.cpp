@@ -8,6 +8,7 @@
 //  - libraries that cannot be paired are refused with the reason.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -110,6 +111,33 @@ TEST(ResolutionExtrapolation, TheLibraryKeepsTheRawValuesAndShowPrintsThem) {
   EXPECT_NE(shown.find("N_a 6"), std::string::npos);
   EXPECT_NE(shown.find("N_a 8"), std::string::npos);
   EXPECT_NE(shown.find("richardson"), std::string::npos);
+}
+
+TEST(ResolutionExtrapolation, TheSeedScatterFloorRaisesTheErrorOfDenseCasesOnly) {
+  // Points below, inside and above the ramp phi 0.21 -> 0.41 (docs/library.md, seed twins).
+  const std::vector<Point> points = {{0.10, 0.1, 1.0}, {0.31, 0.1, 1.0}, {0.50, 0.1, 1.0}};
+  const auto root = fresh_temp_folder("scatter_floor");
+  write_library(root / "n6", points, 6, 2.0);
+  write_library(root / "n8", points, 8, 2.0);
+  ExtrapolationOptions plain, floored;
+  floored.scatter_floor = 0.05;
+  const auto a = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), plain);
+  const auto b = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), floored);
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const LibraryCase& c = b[i].coarse;
+    const double weight = std::clamp((c.phi - 0.21) / 0.2, 0.0, 1.0);  // 0, 1/2, 1
+    EXPECT_NEAR(error_with_scatter_floor(c, floored), std::hypot(c.eta_re_sem, weight * 0.05 * c.eta_re), 1e-12);
+    EXPECT_EQ(b[i].eta_re, a[i].eta_re) << "the floor changes errors, not values";
+    EXPECT_EQ(b[i].coarse.eta_re_sem, a[i].coarse.eta_re_sem) << "the raw cases keep their own error";
+    // Richardson with g = 9/7: the floors of both runs enter as (1 + g)^2 and g^2.
+    const double g = 9.0 / 7.0, sf = weight * 0.05 * b[i].fine.eta_re, sc = weight * 0.05 * c.eta_re;
+    const double expected = std::sqrt(a[i].eta_re_sd * a[i].eta_re_sd + (1 + g) * (1 + g) * sf * sf + g * g * sc * sc);
+    EXPECT_NEAR(b[i].eta_re_sd, expected, 1e-3 * expected) << c.id;
+  }
+  EXPECT_NEAR(b[0].eta_re_sd, a[0].eta_re_sd, 1e-6 * a[0].eta_re_sd);  // phi 0.10: no floor
+  EXPECT_GT(b[2].eta_re_sd, a[2].eta_re_sd + 0.1);  // 5 % of eta_re near 6, times 2.6 from Richardson
 }
 
 TEST(ResolutionExtrapolation, RefusesLibrariesThatCannotBePaired) {
