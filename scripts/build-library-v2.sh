@@ -22,6 +22,8 @@ if [ "$n8" -lt 3 ]; then
   echo "fewer than 3 cases at N_a 8: no extrapolation yet"
   exit 0
 fi
-"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order-low "${P_LOW:-1}"
+# The seed-scatter floor of dense runs (docs/library.md, the phi 0.41 twins over [15, 40]).
+"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order-low "${P_LOW:-1}" \
+  --scatter-floor "${SCATTER_FLOOR:-0.054}"
 "$rbcal" surrogate build "$lib/converged"
 "$rbcal" surrogate check "$lib/converged/surrogate.json" || echo "trend check FAILED (see above)"
