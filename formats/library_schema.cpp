@@ -25,6 +25,7 @@ const std::vector<SignatureField>& numerics_signature_fields() {
       {"numerics.volume_stiffness", json(0.0)},
       {"numerics.contact_range", json(0.0)},
       {"numerics.contact_strength", json(0.0)},
+      {"numerics.contact_gap", json(0.0)},
       {"cells.triangles", std::nullopt},
       {"cells.shape", std::nullopt},
       {"cells.law", std::nullopt},

@@ -21,6 +21,7 @@
 #include "solver/coupling/stresslet.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 #include "solver/membrane/cell_membrane.hpp"
+#include "solver/simulation/cell_contact.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::solver {
@@ -96,6 +97,7 @@ class ShearFlowSimulation {
   std::unique_ptr<CellMembrane> membrane_;
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
+  NodeBins contact_bins_;                     // the contact search's buffers
   std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
   // Fluid velocity at every lattice node (x, y, z components, node_count() each), written
   // by the fluid step before a membrane update: one evaluation of the moments per node

@@ -75,6 +75,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   if ((c.contact_range > 0.0) != (c.contact_strength > 0.0))
     r.fail(c.contact_range > 0.0 ? "numerics.contact_strength" : "numerics.contact_range",
            "give both contact_range and contact_strength, or neither");
+  c.contact_gap = r.number_or("numerics.contact_gap", c.contact_gap, 0.0, 10.0);
   c.seed = static_cast<std::uint64_t>(r.number_or("numerics.seed", 1.0, 0.0, 9.0e15));
 
   c.strain_end = r.number_or("run.strain_end", c.strain_end, 0.0, 1e7);
@@ -127,6 +128,7 @@ nlohmann::json case_to_json(const SimulationCase& c) {
     j["numerics"]["contact_range"] = c.contact_range;
     j["numerics"]["contact_strength"] = c.contact_strength;
   }
+  if (c.contact_gap > 0.0) j["numerics"]["contact_gap"] = c.contact_gap;
   j["run"] = {{"strain_end", c.strain_end},
               {"window", c.window},
               {"record_interval", c.record_interval},

@@ -54,6 +54,9 @@ struct SimulationCase {
   // spacings (0: none), strength in G_s times one lattice spacing.
   double contact_range = 0.0;
   double contact_strength = 0.0;
+  // Or: nodes closer than this many lattice spacings to another cell's node are moved
+  // apart after each node update (cell_contact.hpp, separate_close_nodes; 0: never).
+  double contact_gap = 0.0;
   std::uint64_t seed = 1;
   // run
   double strain_end = 100.0;                    // gamma_dot t at the end

@@ -13,6 +13,8 @@ namespace {
 
 using Cells = std::vector<std::vector<Vec3>>;
 
+NodeBins bins;  // one search structure for all tests: its buffers are reused as in a run
+
 Cells zero_forces(const Cells& x) {
   Cells f;
   for (const auto& c : x) f.emplace_back(c.size(), Vec3::Zero());
@@ -24,7 +26,7 @@ Cells zero_forces(const Cells& x) {
 TEST(CellContact, PairForceFollowsTheLawEqualAndOpposite) {
   const Cells x = {{Vec3(5.0, 5.0, 5.0)}, {Vec3(5.6, 5.0, 5.8)}};  // 1.0 apart
   Cells f = zero_forces(x);
-  const ContactCount n = add_contact_forces(x, 2.0, 0.3, 20.0, 20.0, f);
+  const ContactCount n = add_contact_forces(x, 2.0, 0.3, 20.0, 20.0, f, bins);
   EXPECT_EQ(n.node_pairs, 2);
   const double magnitude = 0.3 * (2.0 / 1.0 - 1.0);
   const Vec3 away = Vec3(-0.6, 0.0, -0.8);  // unit vector from the second node to the first
@@ -35,7 +37,7 @@ TEST(CellContact, PairForceFollowsTheLawEqualAndOpposite) {
 TEST(CellContact, NoForceBeyondRangeNorWithinOneCell) {
   const Cells x = {{Vec3(5.0, 5.0, 5.0), Vec3(5.5, 5.0, 5.0)}, {Vec3(7.01, 5.0, 5.0)}};
   Cells f = zero_forces(x);
-  EXPECT_EQ(add_contact_forces(x, 1.5, 1.0, 20.0, 20.0, f).node_pairs, 0);
+  EXPECT_EQ(add_contact_forces(x, 1.5, 1.0, 20.0, 20.0, f, bins).node_pairs, 0);
   for (const auto& c : f)
     for (const Vec3& v : c) EXPECT_EQ(v.norm(), 0.0);
 }
@@ -45,7 +47,7 @@ TEST(CellContact, ActsAcrossThePeriodicSeamInXAndZ) {
   // [0, period) are allowed: cells drift across the seam).
   const Cells x = {{Vec3(0.2, 5.0, 0.1)}, {Vec3(19.6, 5.0, -20.0 + 0.1)}};
   Cells f = zero_forces(x);
-  EXPECT_EQ(add_contact_forces(x, 1.0, 1.0, 20.0, 20.0, f).node_pairs, 2);
+  EXPECT_EQ(add_contact_forces(x, 1.0, 1.0, 20.0, 20.0, f, bins).node_pairs, 2);
   EXPECT_NEAR(f[0][0].x(), 1.0 / 0.6 - 1.0, 1e-12);  // pushed towards +x, away from the seam
   EXPECT_NEAR(f[1][0].x(), -(1.0 / 0.6 - 1.0), 1e-12);
 }
@@ -58,7 +60,7 @@ TEST(CellContact, MatchesABruteForceSumAndExertsNoNetForce) {
   for (auto& c : x)
     for (int m = 0; m < 80; ++m) c.push_back(Vec3(px * (2.0 * u(rng) - 0.5), 1.0 + 6.0 * u(rng), pz * u(rng)));
   Cells f = zero_forces(x);
-  const ContactCount n = add_contact_forces(x, range, strength, px, pz, f);
+  const ContactCount n = add_contact_forces(x, range, strength, px, pz, f, bins);
   long pairs = 0;
   Vec3 total = Vec3::Zero();
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -87,7 +89,26 @@ TEST(CellContact, MatchesABruteForceSumAndExertsNoNetForce) {
 TEST(CellContact, OffWhenRangeOrStrengthIsZero) {
   const Cells x = {{Vec3(5.0, 5.0, 5.0)}, {Vec3(5.1, 5.0, 5.0)}};
   Cells f = zero_forces(x);
-  EXPECT_EQ(add_contact_forces(x, 0.0, 1.0, 20.0, 20.0, f).node_pairs, 0);
-  EXPECT_EQ(add_contact_forces(x, 1.0, 0.0, 20.0, 20.0, f).node_pairs, 0);
+  EXPECT_EQ(add_contact_forces(x, 0.0, 1.0, 20.0, 20.0, f, bins).node_pairs, 0);
+  EXPECT_EQ(add_contact_forces(x, 1.0, 0.0, 20.0, 20.0, f, bins).node_pairs, 0);
   EXPECT_EQ(f[0][0].norm(), 0.0);
+}
+
+TEST(CellSeparation, MovesCloseNodesApartToTheGapAndLeavesOthers) {
+  // Nodes 0.4 apart across the seam (gap 1.0): each moves 0.3 away from the other.
+  Cells x = {{Vec3(0.2, 5.0, 3.0), Vec3(5.0, 5.0, 3.0)}, {Vec3(19.8, 5.0, 3.0)}};
+  const ContactCount n = separate_close_nodes(x, 1.0, 20.0, 20.0, bins);
+  EXPECT_EQ(n.node_pairs, 2);
+  EXPECT_NEAR((x[0][0] - Vec3(0.5, 5.0, 3.0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((x[1][0] - Vec3(19.5, 5.0, 3.0)).norm(), 0.0, 1e-12);
+  EXPECT_EQ(x[0][1], Vec3(5.0, 5.0, 3.0));  // its partner is of its own cell: no move
+}
+
+TEST(CellSeparation, EachNodeMovesAwayFromItsNearestPartnerOnly) {
+  // Node A with two partners of another cell at 0.3 (nearest) and 0.6; gap 0.8.
+  Cells x = {{Vec3(5.0, 5.0, 5.0)}, {Vec3(5.3, 5.0, 5.0), Vec3(5.0, 5.6, 5.0)}};
+  separate_close_nodes(x, 0.8, 20.0, 20.0, bins);
+  EXPECT_NEAR((x[0][0] - Vec3(5.0 - 0.25, 5.0, 5.0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((x[1][0] - Vec3(5.3 + 0.25, 5.0, 5.0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((x[1][1] - Vec3(5.0, 5.6 + 0.1, 5.0)).norm(), 0.0, 1e-12);
 }
