@@ -38,7 +38,7 @@ void bin_nodes(const std::vector<std::vector<Vec3>>& x, double range, double per
   b.start.assign(bins + 1, 0);
   b.bin_of.resize(total);
   b.entries.resize(total);
-  b.wrapped.resize(total);
+  b.packed.resize(total);
   std::size_t e = 0;
   for (std::uint32_t i = 0; i < x.size(); ++i)
     for (std::uint32_t m = 0; m < x[i].size(); ++m, ++e) {
@@ -53,7 +53,8 @@ void bin_nodes(const std::vector<std::vector<Vec3>>& x, double range, double per
     for (std::uint32_t m = 0; m < x[i].size(); ++m, ++e) {
       const std::uint32_t slot = b.fill[b.bin_of[e]]++;
       b.entries[slot] = {i, m};
-      b.wrapped[slot] = Vec3(wrap(x[i][m].x(), period_x), x[i][m].y(), wrap(x[i][m].z(), period_z));
+      b.packed[slot] = {static_cast<float>(wrap(x[i][m].x(), period_x)), static_cast<float>(x[i][m].y()),
+                        static_cast<float>(wrap(x[i][m].z(), period_z)), i};
     }
 }
 
@@ -61,28 +62,37 @@ void bin_nodes(const std::vector<std::vector<Vec3>>& x, double range, double per
 // d the vector from that node to e's node (nearest periodic image).
 template <class Visit>
 void for_each_partner(const NodeBins& b, long e, double range2, double period_x, double period_z, Visit&& visit) {
-  const std::uint32_t cell = b.entries[e].first;
-  const Vec3& p = b.wrapped[e];
-  const int ix = b.bin_x(p.x()), iy = b.bin_y(p.y()), iz = b.bin_z(p.z());
-  for (int dx = -1; dx <= 1; ++dx) {
+  const NodeBins::Packed self = b.packed[e];
+  const int ix = b.bin_x(self.x), iy = b.bin_y(self.y), iz = b.bin_z(self.z);
+  // Scans the entries [from, to) of one x-image and z-image of the neighbourhood.
+  auto scan = [&](std::uint32_t from, std::uint32_t to, float shift_x, float shift_z) {
+    const float qx = self.x - shift_x, qy = self.y, qz = self.z - shift_z;
+    for (std::uint32_t o = from; o < to; ++o) {
+      const NodeBins::Packed& n = b.packed[o];
+      const float dx = qx - n.x, dy = qy - n.y, dz = qz - n.z;
+      const float r2 = dx * dx + dy * dy + dz * dz;
+      if (r2 >= range2 || n.cell == self.cell) continue;
+      visit(Vec3(dx, dy, dz), static_cast<double>(r2));
+    }
+  };
+  for (int ddx = -1; ddx <= 1; ++ddx) {
     // A neighbour bin across the seam holds positions one period away.
-    const int jx = ix + dx;
-    const double shift_x = jx < 0 ? -period_x : (jx >= b.bx ? period_x : 0.0);
-    for (int dy = -1; dy <= 1; ++dy) {
-      const int jy = iy + dy;
+    int jx = ix + ddx;
+    const float shift_x = jx < 0 ? -period_x : (jx >= b.bx ? period_x : 0.0f);
+    jx = jx < 0 ? jx + b.bx : (jx >= b.bx ? jx - b.bx : jx);
+    for (int ddy = -1; ddy <= 1; ++ddy) {
+      const int jy = iy + ddy;
       if (jy < 0 || jy >= b.by) continue;
-      for (int dz = -1; dz <= 1; ++dz) {
-        const int jz = iz + dz;
-        const double shift_z = jz < 0 ? -period_z : (jz >= b.bz ? period_z : 0.0);
-        const Vec3 q = p - Vec3(shift_x, 0.0, shift_z);  // p relative to the bin's own image
-        const int k = b.index(jx < 0 ? jx + b.bx : (jx >= b.bx ? jx - b.bx : jx), jy,
-                              jz < 0 ? jz + b.bz : (jz >= b.bz ? jz - b.bz : jz));
-        for (std::uint32_t o = b.start[k]; o < b.start[k + 1]; ++o) {
-          const Vec3 d = q - b.wrapped[o];
-          const double r2 = d.squaredNorm();
-          if (r2 >= range2 || b.entries[o].first == cell) continue;
-          visit(d, r2);
-        }
+      if (iz >= 1 && iz + 1 < b.bz) {  // the three z-bins are one run of entries
+        scan(b.start[b.index(jx, jy, iz - 1)], b.start[b.index(jx, jy, iz + 1) + 1], shift_x, 0.0f);
+        continue;
+      }
+      for (int ddz = -1; ddz <= 1; ++ddz) {
+        int jz = iz + ddz;
+        const float shift_z = jz < 0 ? -period_z : (jz >= b.bz ? period_z : 0.0f);
+        jz = jz < 0 ? jz + b.bz : (jz >= b.bz ? jz - b.bz : jz);
+        const int k = b.index(jx, jy, jz);
+        scan(b.start[k], b.start[k + 1], shift_x, shift_z);
       }
     }
   }

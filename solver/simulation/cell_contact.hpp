@@ -22,7 +22,13 @@ struct NodeBins {
   double side_x = 1.0, side_y = 1.0, side_z = 1.0, y_low = 0.0;
   std::vector<std::uint32_t> start;                              // bin k: entries [start[k], start[k + 1])
   std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;  // (cell, node)
-  std::vector<Vec3> wrapped;  // entry positions, wrapped into the box in x and z
+  // Entry positions wrapped into the box in x and z, in single precision with the cell
+  // (16 bytes: the search streams through them).
+  struct Packed {
+    float x, y, z;
+    std::uint32_t cell;
+  };
+  std::vector<Packed> packed;
   std::vector<std::uint32_t> bin_of, fill;  // scratch of the binning
   std::vector<Vec3> shift;                  // scratch of separate_close_nodes
   int bin_x(double v) const;
