@@ -8,6 +8,7 @@ void add_couette_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_stretch_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
+void add_overlaps_command(CLI::App& app);
 void add_surrogate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 // `show` and `propose` under the `library` sub-command (created in main.cpp).

@@ -31,7 +31,7 @@ surrogate::ParameterGrid candidate_grid(const ProposeOptions& o, const surrogate
   if (!o.phi.empty() || !o.ca.empty() || !o.lambda.empty()) {
     if (o.phi.empty() || o.ca.empty() || o.lambda.empty())
       throw std::invalid_argument("library propose: a user grid needs all of --phi, --ca and --lambda");
-    return {o.phi, o.ca, o.lambda};
+    return {o.phi, o.ca, o.lambda, {}};
   }
   if (lib.plan && lib.plan->is_listed()) {
     // A space-filling design has no axes to refine: a regular grid over its box instead,
@@ -46,7 +46,7 @@ surrogate::ParameterGrid candidate_grid(const ProposeOptions& o, const surrogate
       return v;
     };
     const surrogate::ParameterGrid& p = *lib.plan;
-    return {spaced(p.phi, 9, false), spaced(p.capillary_number, 9, true), spaced(p.viscosity_ratio, 5, true)};
+    return {spaced(p.phi, 9, false), spaced(p.capillary_number, 9, true), spaced(p.viscosity_ratio, 5, true), {}};
   }
   if (lib.plan) return surrogate::refined(*lib.plan);
   surrogate::ParameterGrid present;

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   rbcal::cli::add_bench_command(app);
   rbcal::cli::add_stretch_command(app);
   rbcal::cli::add_simulate_command(app);
+  rbcal::cli::add_overlaps_command(app);
   rbcal::cli::add_surrogate_command(app);
   rbcal::cli::add_calibrate_command(app);
   CLI::App* library = app.add_subcommand("library", "Simulation libraries: generate, show, propose, extrapolate");

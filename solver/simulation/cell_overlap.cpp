@@ -1,5 +1,6 @@
 #include "solver/simulation/cell_overlap.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rbcal::solver {
@@ -11,7 +12,8 @@ OverlapCount count_overlaps(const std::vector<std::vector<Vec3>>& x, const std::
   for (const auto& cell : x) bounds.push_back(bounding_box(cell));
   long nodes_inside = 0;
   int cell_pairs = 0;
-#pragma omp parallel for schedule(dynamic) reduction(+ : nodes_inside, cell_pairs)
+  double max_depth = 0.0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : nodes_inside, cell_pairs) reduction(max : max_depth)
   for (std::size_t i = 0; i < cells; ++i) {
     for (std::size_t j = 0; j < cells; ++j) {
       if (i == j) continue;
@@ -24,13 +26,47 @@ OverlapCount count_overlaps(const std::vector<std::vector<Vec3>>& x, const std::
       for (const Vec3& p : x[i]) {
         const Vec3 q = p + shift;
         if ((q.array() < bounds[j].lo.array()).any() || (q.array() > bounds[j].hi.array()).any()) continue;
-        if (winding_number(q, x[j], triangles) > 0.5) ++inside;
+        if (winding_number(q, x[j], triangles) <= 0.5) continue;
+        ++inside;
+        double nearest = 1e300;
+        for (const Vec3& r : x[j]) nearest = std::min(nearest, (q - r).squaredNorm());
+        max_depth = std::max(max_depth, std::sqrt(nearest));
       }
       nodes_inside += inside;
       if (inside > 0) ++cell_pairs;
     }
   }
-  return {nodes_inside, cell_pairs};
+  return {nodes_inside, cell_pairs, max_depth};
+}
+
+double overlap_volume_fraction(const std::vector<std::vector<Vec3>>& x, const std::vector<Triangle>& triangles,
+                               double period_x, double height, double period_z, double spacing) {
+  std::vector<Bounds> bounds;
+  double cells_volume = 0.0;
+  for (const auto& cell : x) {
+    bounds.push_back(bounding_box(cell));
+    cells_volume += enclosed_volume(cell, triangles);
+  }
+  const int nx = static_cast<int>(std::ceil(period_x / spacing));
+  const int ny = static_cast<int>(std::ceil(height / spacing));
+  const int nz = static_cast<int>(std::ceil(period_z / spacing));
+  long extra = 0;  // grid points inside a second, third ... cell
+#pragma omp parallel for schedule(dynamic) reduction(+ : extra)
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) {
+        const Vec3 p((i + 0.5) * spacing, (j + 0.5) * spacing, (k + 0.5) * spacing);
+        int inside = 0;
+        for (std::size_t c = 0; c < x.size(); ++c) {
+          // The image of the point nearest to the cell across the periodic x and z.
+          const Vec3 d = p - 0.5 * (bounds[c].lo + bounds[c].hi);
+          const Vec3 q = p - Vec3(period_x * std::round(d.x() / period_x), 0.0, period_z * std::round(d.z() / period_z));
+          if ((q.array() < bounds[c].lo.array()).any() || (q.array() > bounds[c].hi.array()).any()) continue;
+          if (winding_number(q, x[c], triangles) > 0.5) ++inside;
+        }
+        if (inside > 1) extra += inside - 1;
+      }
+  return cells_volume > 0.0 ? extra * spacing * spacing * spacing / cells_volume : 0.0;
 }
 
 }  // namespace rbcal::solver

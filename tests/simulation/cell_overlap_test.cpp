@@ -5,6 +5,8 @@
 #include "solver/membrane/cell_shapes.hpp"
 #include "solver/simulation/cell_overlap.hpp"
 
+#include <numbers>
+
 using namespace rbcal::solver;
 
 namespace {
@@ -46,4 +48,27 @@ TEST(CellOverlap, CountsNodesInsideOtherCellsAlsoAcrossTheSeam) {
                                            sphere.triangles, period, period);
   EXPECT_GT(seam.nodes_inside, 0);
   EXPECT_EQ(seam.cell_pairs, 2);
+}
+
+TEST(CellOverlap, DepthAndVolumeOfTwoOverlappingSpheresAcrossTheSeam) {
+  // Two spheres of radius 4 with centres 6 apart across the seam in x: each reaches 2 into
+  // the other. The lens they share has volume pi (4 R + d)(2 R - d)^2 / 12 = 14.67 pi
+  // (R 4, d 6), i.e. 0.1719 of one sphere, 0.0859 of the two together.
+  const TriangleMesh sphere = make_sphere(1280, 4.0);
+  const double period = 40.0;
+  const std::vector<std::vector<Vec3>> x = {moved(sphere, {3, 10, 10}), moved(sphere, {37, 10, 10})};
+  const OverlapCount n = count_overlaps(x, sphere.triangles, period, period);
+  // The deepest point of one sphere inside the other is 2 from the other's surface; a
+  // node's distance to the host's nearest node exceeds its depth by less than the node
+  // spacing (about 0.8 here), and the sphere's nodes need not include that point.
+  EXPECT_GT(n.max_depth, 1.6);
+  EXPECT_LT(n.max_depth, 2.8);
+  const double lens = std::numbers::pi * (4 * 4.0 + 6.0) * (2 * 4.0 - 6.0) * (2 * 4.0 - 6.0) / 12.0;
+  const double fraction = overlap_volume_fraction(x, sphere.triangles, period, 20.0, period, 0.25);
+  const double two_spheres = 2.0 * enclosed_volume(x[0], sphere.triangles);
+  EXPECT_NEAR(fraction, lens / two_spheres, 0.1 * lens / two_spheres);  // grid of 0.25: lens ~ 3000 points
+  // Apart: nothing is counted twice.
+  const std::vector<std::vector<Vec3>> apart = {moved(sphere, {10, 10, 10}), moved(sphere, {20, 10, 10})};
+  EXPECT_EQ(overlap_volume_fraction(apart, sphere.triangles, period, 20.0, period, 0.5), 0.0);
+  EXPECT_EQ(count_overlaps(apart, sphere.triangles, period, period).max_depth, 0.0);
 }
