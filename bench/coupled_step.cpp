@@ -46,7 +46,6 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
   const double per = 1.0 / static_cast<double>(t.steps);
   out.fluid = t.fluid * per;
   out.membrane_forces = t.membrane_forces * per;
-  out.contact = t.contact * per;
   out.ordering = t.ordering * per;
   out.spreading = t.spreading * per;
   out.indicator = t.indicator * per;
@@ -65,7 +64,6 @@ std::string CoupledStepTimings::brief_report() const {
                        nx, ny, nz, cells, membrane_nodes, static_cast<long long>(steps), coupling_interval);
   s += line("  fluid update (+ velocity field) %9.3f ms/step\n", fluid * 1e3);
   s += line("  membrane forces              %9.3f ms/step\n", membrane_forces * 1e3);
-  if (contact > 0.0) s += line("  cell contact                 %9.3f ms/step\n", contact * 1e3);
   s += line("  node ordering                %9.3f ms/step\n", ordering * 1e3);
   s += line("  force spreading              %9.3f ms/step\n", spreading * 1e3);
   s += line("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", indicator * 1e3,
@@ -86,7 +84,6 @@ nlohmann::json CoupledStepTimings::to_json() const {
           {"plain_fluid_seconds_per_step", plain_fluid},
           {"seconds", {{"fluid", fluid * n},
                        {"membrane_forces", membrane_forces * n},
-                       {"contact", contact * n},
                        {"ordering", ordering * n},
                        {"spreading", spreading * n},
                        {"indicator", indicator * n},

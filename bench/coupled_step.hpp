@@ -19,9 +19,9 @@ struct CoupledStepTimings {
   int coupling_interval = 1;
   std::int64_t steps = 0, indicator_builds = 0;
   // Seconds per step.
-  double fluid = 0, membrane_forces = 0, contact = 0, ordering = 0, spreading = 0, indicator = 0, interpolation = 0;
+  double fluid = 0, membrane_forces = 0, ordering = 0, spreading = 0, indicator = 0, interpolation = 0;
   double plain_fluid = 0;
-  double whole() const { return fluid + membrane_forces + contact + ordering + spreading + indicator + interpolation; }
+  double whole() const { return fluid + membrane_forces + ordering + spreading + indicator + interpolation; }
   double coupling() const { return whole() - fluid; }
 
   std::string brief_report() const;  // the table `rbcal bench --case` prints

@@ -22,6 +22,19 @@ void FieldReader::fail(const std::string& field, const std::string& what) const 
   throw FormatError(source_, field, what);
 }
 
+void FieldReader::only_known_keys(const std::string& path, const std::vector<std::string>& known) const {
+  const nlohmann::json* node = find(path);
+  if (!node || !node->is_object()) return;
+  for (const auto& [key, value] : node->items()) {
+    bool ok = false;
+    for (const std::string& k : known) ok = ok || k == key;
+    if (ok) continue;
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    fail(path + "." + key, "unknown field (known here: " + list + ")");
+  }
+}
+
 const nlohmann::json* FieldReader::find(const std::string& path) const {
   const nlohmann::json* node = &root_;
   std::stringstream ss(path);

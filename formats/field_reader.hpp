@@ -22,6 +22,9 @@ class FieldReader {
   // neither an object nor an array (a typo there must not look like an absent field).
   const nlohmann::json* find(const std::string& path) const;
   const nlohmann::json& require(const std::string& path) const;
+  // Fails on a key of the object at `path` that is not in `known` (a misspelled or retired
+  // option must not be ignored silently); an absent object passes.
+  void only_known_keys(const std::string& path, const std::vector<std::string>& known) const;
 
   double number(const std::string& path) const;        // finite
   double positive(const std::string& path) const;      // > 0

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
-#include "solver/simulation/cell_contact.hpp"
 #include "solver/simulation/cell_seeding.hpp"
 #include "solver/simulation/checkpoint.hpp"
 
@@ -143,16 +142,6 @@ void ShearFlowSimulation::move_cells(double dt) {
       v_[cell][m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
     }
   }
-  if (case_.contact_gap > 0.0) {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += dt * v_[i][m];
-    separate_close_nodes(x_, case_.contact_gap, units_.nx, units_.nz, contact_bins_);
-#pragma omp parallel for schedule(dynamic)
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      correct_volume(x_[i], membrane_->reference().triangles, membrane_->reference_volume());
-    return;
-  }
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {
     for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += dt * v_[i][m];
@@ -174,9 +163,6 @@ void ShearFlowSimulation::step() {
   if (fluid_.steps_done() % interval == 0) {
     compute_membrane_forces();
     lap(timings_.membrane_forces);
-    add_contact_forces(x_, case_.contact_range, case_.contact_strength * units_.shear_modulus, units_.nx,
-                       units_.nz, f_, contact_bins_);
-    lap(timings_.contact);
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     lap(timings_.ordering);
     fluid_.clear_force();

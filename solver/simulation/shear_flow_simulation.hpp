@@ -21,7 +21,6 @@
 #include "solver/coupling/stresslet.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 #include "solver/membrane/cell_membrane.hpp"
-#include "solver/simulation/cell_contact.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::solver {
@@ -36,7 +35,6 @@ struct CellObservables {
 // Wall-clock seconds spent in each part of step(), accumulated since the last reset.
 struct StepTimings {
   double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
-  double contact = 0.0;          // repulsion between cells (numerics.contact_range)
   double ordering = 0.0;         // sorting the nodes by stencil (order_nodes)
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field
@@ -97,7 +95,6 @@ class ShearFlowSimulation {
   std::unique_ptr<CellMembrane> membrane_;
   InsideFraction inside_;
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
-  NodeBins contact_bins_;                     // the contact search's buffers
   std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
   // Fluid velocity at every lattice node (x, y, z components, node_count() each), written
   // by the fluid step before a membrane update: one evaluation of the moments per node

@@ -20,6 +20,13 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   if (schema != formats::kCaseSchema)
     r.fail("schema", std::string("must be \"") + formats::kCaseSchema + "\", got \"" + schema + "\"");
 
+  r.only_known_keys("params", {"phi", "Ca", "lambda", "kb_hat"});
+  r.only_known_keys("cells", {"shape", "profile", "triangles", "law", "skalak_c", "placements"});
+  r.only_known_keys("numerics", {"N_a", "tau_out", "box", "Re", "kernel", "integrator", "indicator_tolerance",
+                                 "coupling_interval", "volume_stiffness", "seed"});
+  r.only_known_keys("run", {"strain_end", "window", "record_interval", "vtk_interval", "checkpoint_interval",
+                            "quiescent"});
+
   SimulationCase c;
   c.flow.capillary_number = r.number_or("params.Ca", c.flow.capillary_number, 1e-6, 1e3);
   c.flow.viscosity_ratio = r.number_or("params.lambda", c.flow.viscosity_ratio, 1e-3, 1e3);
@@ -70,12 +77,6 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   c.indicator_tolerance = r.number_or("numerics.indicator_tolerance", c.indicator_tolerance, 0.0, 1.0);
   c.coupling_interval = r.integer_or("numerics.coupling_interval", c.coupling_interval, 1, 1000);
   c.volume_stiffness = r.number_or("numerics.volume_stiffness", c.volume_stiffness, 0.0, 1e9);
-  c.contact_range = r.number_or("numerics.contact_range", c.contact_range, 0.0, 10.0);
-  c.contact_strength = r.number_or("numerics.contact_strength", c.contact_strength, 0.0, 1e6);
-  if ((c.contact_range > 0.0) != (c.contact_strength > 0.0))
-    r.fail(c.contact_range > 0.0 ? "numerics.contact_strength" : "numerics.contact_range",
-           "give both contact_range and contact_strength, or neither");
-  c.contact_gap = r.number_or("numerics.contact_gap", c.contact_gap, 0.0, 10.0);
   c.seed = static_cast<std::uint64_t>(r.number_or("numerics.seed", 1.0, 0.0, 9.0e15));
 
   c.strain_end = r.number_or("run.strain_end", c.strain_end, 0.0, 1e7);
@@ -123,12 +124,6 @@ nlohmann::json case_to_json(const SimulationCase& c) {
                    {"coupling_interval", c.coupling_interval},
                    {"volume_stiffness", c.volume_stiffness},
                    {"seed", c.seed}};
-  // Written only when on, so that cases and checkpoints from before the field stay alike.
-  if (c.contact_range > 0.0) {
-    j["numerics"]["contact_range"] = c.contact_range;
-    j["numerics"]["contact_strength"] = c.contact_strength;
-  }
-  if (c.contact_gap > 0.0) j["numerics"]["contact_gap"] = c.contact_gap;
   j["run"] = {{"strain_end", c.strain_end},
               {"window", c.window},
               {"record_interval", c.record_interval},

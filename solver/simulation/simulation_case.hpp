@@ -50,13 +50,6 @@ struct SimulationCase {
   // Fluid steps per membrane step (forces, spreading, inside fraction, node update).
   int coupling_interval = 1;
   double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force
-  // Repulsion between nodes of different cells (cell_contact.hpp): range in lattice
-  // spacings (0: none), strength in G_s times one lattice spacing.
-  double contact_range = 0.0;
-  double contact_strength = 0.0;
-  // Or: nodes closer than this many lattice spacings to another cell's node are moved
-  // apart after each node update (cell_contact.hpp, separate_close_nodes; 0: never).
-  double contact_gap = 0.0;
   std::uint64_t seed = 1;
   // run
   double strain_end = 100.0;                    // gamma_dot t at the end
