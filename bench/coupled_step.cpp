@@ -26,7 +26,12 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
   // NaNs run at their own speed: the guards after every step, outside the timed parts.
   auto step = [&] {
     try {
-      sim.step();
+      try {
+        sim.step();
+      } catch (const std::runtime_error& e) {  // the per-step node guard
+        throw std::runtime_error("run stopped at step " + std::to_string(sim.steps_done()) + " (strain " +
+                                 std::to_string(sim.strain()) + "): " + e.what());
+      }
       solver::check_state(sim.observe(), sim.steps_done());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(case_name + ": the case is not stable, so no timings: " + e.what());

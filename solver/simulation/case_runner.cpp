@@ -150,7 +150,10 @@ class CaseRun {
     try {
       sim_.step();
     } catch (const std::runtime_error& e) {
-      throw std::runtime_error("run stopped at step " + std::to_string(step) + ": " + e.what());
+      const std::string failed = opt_.output_dir + "/checkpoint_failed.bin";
+      sim_.save_checkpoint(failed);
+      throw std::runtime_error("run stopped at step " + std::to_string(step) + " (strain " +
+                               std::to_string(sim_.strain()) + "): " + e.what() + "; state written to " + failed);
     }
   }
 

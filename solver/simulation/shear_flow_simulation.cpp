@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
@@ -127,7 +128,8 @@ void ShearFlowSimulation::move_cells(double dt) {
   // All nodes of all cells in one parallel loop, in the order of their stencils' rows
   // (order_nodes, built from these positions when the forces were spread).
   const long total = static_cast<long>(order_.nodes.size());
-#pragma omp parallel for schedule(static)
+  double fastest = 0.0;  // squared node speed
+#pragma omp parallel for schedule(static) reduction(max : fastest)
   for (long g = 0; g < total; ++g) {
     const auto [cell, m] = order_.nodes[g];
     const Vec3& x = order_.position[g];
@@ -141,6 +143,17 @@ void ShearFlowSimulation::move_cells(double dt) {
       const Vec3 u4 = velocity_at(x + dt * u3);
       v_[cell][m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
     }
+    fastest = std::max(fastest, v_[cell][m].squaredNorm());
+  }
+  // The explicit coupling's instability shows first as runaway node speeds. Caught here,
+  // every membrane step, it stops the run before exploding meshes reach the inside
+  // fraction (whose scan-line grid follows their bounding boxes: a blow-up caught only
+  // at the next recorded row once grew past 7 GB).
+  const double mach = std::sqrt(3.0 * fastest);
+  if (!(mach < kMaxNodeMach)) {
+    std::ostringstream what;
+    what << "membrane-node Mach number " << mach << " exceeds " << kMaxNodeMach << " (the coupling went unstable)";
+    throw std::runtime_error(what.str());
   }
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {

@@ -52,6 +52,10 @@ struct Observables {
   std::vector<CellObservables> cells;
 };
 
+// Membrane nodes faster than this (in units of the lattice speed of sound) mean the
+// explicit coupling has gone unstable; checked every membrane step and at every record.
+inline constexpr double kMaxNodeMach = 0.3;
+
 class ShearFlowSimulation {
  public:
   explicit ShearFlowSimulation(const SimulationCase& c);

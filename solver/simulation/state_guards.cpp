@@ -16,7 +16,8 @@ void check_state(const Observables& o, std::int64_t step) {
   for (std::size_t i = 0; i < o.cells.size(); ++i)
     if (!std::isfinite(o.cells[i].volume_error) || std::abs(o.cells[i].volume_error) > 0.5)
       fail("cell " + std::to_string(i) + ": volume error " + std::to_string(o.cells[i].volume_error));
-  if (!(o.max_mach < 0.3)) fail("membrane-node Mach number " + std::to_string(o.max_mach) + " exceeds 0.3");
+  if (!(o.max_mach < kMaxNodeMach))
+    fail("membrane-node Mach number " + std::to_string(o.max_mach) + " exceeds " + std::to_string(kMaxNodeMach));
 }
 
 }  // namespace rbcal::solver
