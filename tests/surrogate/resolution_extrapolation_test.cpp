@@ -61,7 +61,10 @@ TEST(ResolutionExtrapolation, RichardsonIsExactForTheRightOrderAndTheCorrectionM
   const auto root = fresh_temp_folder("extrapolation");
   write_library(root / "n6", points, 6, 2.0);
   write_library(root / "n8", paired, 8, 2.0);
-  const auto cases = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"));
+  ExtrapolationOptions second_order;  // the data's own order, and order 1 for the sd
+  second_order.order = 2.0;
+  second_order.order_low = 1.0;
+  const auto cases = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), second_order);
   ASSERT_EQ(cases.size(), 40u);
   int paired_count = 0, covered = 0, unpaired_count = 0;
   for (const ExtrapolatedCase& c : cases) {
@@ -91,7 +94,8 @@ TEST(ResolutionExtrapolation, TheLibraryKeepsTheRawValuesAndShowPrintsThem) {
   const auto root = fresh_temp_folder("extrapolated_library");
   write_library(root / "n6", points, 6, 2.0);
   write_library(root / "n8", points, 8, 2.0);  // all paired: no correction model needed
-  const ExtrapolationOptions options;
+  ExtrapolationOptions options;
+  options.order = 2.0;  // the data's own order
   const auto cases = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), options);
   std::filesystem::create_directories(root / "out" / "cases");
   for (const auto& c : cases)
@@ -119,7 +123,9 @@ TEST(ResolutionExtrapolation, TheSeedScatterFloorRaisesTheErrorOfDenseCasesOnly)
   const auto root = fresh_temp_folder("scatter_floor");
   write_library(root / "n6", points, 6, 2.0);
   write_library(root / "n8", points, 8, 2.0);
-  ExtrapolationOptions plain, floored;
+  ExtrapolationOptions plain;
+  plain.order = 2.0;  // the data's own order
+  ExtrapolationOptions floored = plain;
   floored.scatter_floor = 0.05;
   const auto a = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), plain);
   const auto b = extrapolate_to_continuum(read_library(root / "n6"), read_library(root / "n8"), floored);
