@@ -19,6 +19,9 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("FluidLattice: " + what);
 }
 
+// The checkpoints' population stride: the node count rounded up to the SIMD width.
+std::size_t packed_stride(std::size_t nodes) { return (nodes + simd::width - 1) / simd::width * simd::width; }
+
 // Equilibrium populations for density rho and velocity u (second order in u).
 void equilibrium(double rho, double ux, double uy, double uz, double* feq) {
   const double usq = ux * ux + uy * uy + uz * uz;
@@ -35,11 +38,14 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
-  stride_ = (nodes_ + simd::width - 1) / simd::width * simd::width;
-  f_.resize(Q * stride_);
+  row_length_ = (static_cast<std::size_t>(config.nz) + simd::width - 1) / simd::width * simd::width;
+  stride_ = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
+  f_.resize(Q * stride_);  // zeros: the padding lanes start finite (they never feed a node)
   f_next_.resize(Q * stride_);
-  viscosity_.assign(nodes_, config.viscosity);
-  force_.assign(3 * nodes_, 0.0);
+  // One vector of slack after the per-node fields: the last chunk of the last row loads a
+  // full vector of them (lanes past the row are padding and are not used).
+  viscosity_.assign(nodes_ + simd::width, config.viscosity);
+  force_.assign(3 * nodes_ + simd::width, 0.0);
   for (std::size_t n = 0; n < nodes_; ++n) set_equilibrium(n, 1.0, 0.0, 0.0, 0.0);
 }
 
@@ -56,7 +62,7 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
   double feq[Q];
   equilibrium(rho, ux + force(0)[node] * half_over_rho, uy + force(1)[node] * half_over_rho,
               uz + force(2)[node] * half_over_rho, feq);
-  for (int q = 0; q < Q; ++q) f_[q * stride_ + node] = feq[q];
+  for (int q = 0; q < Q; ++q) f_[q * stride_ + padded(node)] = feq[q];
 }
 
 void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
@@ -64,7 +70,8 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
   constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
   const bool walls = config_.y_boundary == WallNormalBoundary::MovingWalls;
-  const std::size_t row = index(x, y, 0);
+  const std::size_t row = index(x, y, 0);  // in the per-node fields
+  const std::size_t prow = padded_row(x, y);  // in the population arrays
 
   // Node z of this row pulls population q from src[q][z - shift[q]] + add[q].
   const double* src[Q];
@@ -72,19 +79,19 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
   double add[Q];
   double* out[Q];
   for (int q = 0; q < Q; ++q) {
-    out[q] = f_next_.data() + q * stride_ + row;
+    out[q] = f_next_.data() + q * stride_ + prow;
     int ys = y - c[q][1];
     if (walls && (ys < 0 || ys >= ny)) {
       // Half-way bounce-back with the moving-wall term (Ladd 1994):
       // f_q(x, t+1) = f*_qbar(x, t) + 6 w_q (c_q . u_wall).
       const double u_wall = ys < 0 ? config_.wall_velocity_bottom : config_.wall_velocity_top;
-      src[q] = f_.data() + opposite(q) * stride_ + row;
+      src[q] = f_.data() + opposite(q) * stride_ + prow;
       shift[q] = 0;
       add[q] = 6.0 * w[q] * c[q][2] * u_wall;
     } else {
       ys = (ys + ny) % ny;
       const int xs = (x - c[q][0] + nx) % nx;
-      src[q] = f_.data() + q * stride_ + index(xs, ys, 0);
+      src[q] = f_.data() + q * stride_ + padded_row(xs, ys);
       shift[q] = c[q][2];
       add[q] = 0.0;
     }
@@ -96,48 +103,47 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
   const double* fx = force_.data() + row;
   const double* fy = force_.data() + nodes_ + row;
   const double* fz = force_.data() + 2 * nodes_ + row;
-  // stride_ is a multiple of W, so all q streams share the row's alignment.
-  const bool streaming_stores = simd::is_aligned(out[0]);
+  // Every padded row starts aligned (stride_ and row_length_ are multiples of W).
+  using vmask = decltype(vdouble{} < vdouble{});
+  vdouble lane_index;
+  for (int l = 0; l < W; ++l) lane_index[l] = l;
 
   for (int z0 = 0; z0 < nz; z0 += W) {
     vdouble f[Q], nu_v, fx_v, fy_v, fz_v;
     const bool first = z0 == 0, last = z0 + W >= nz;
-    if (!(first && last) && z0 + W <= nz) {
-      // A full chunk; in the first and last ones, the populations streaming across the
-      // periodic z boundary take one lane from the other end of the row.
-      for (int q = 0; q < Q; ++q) {
-        if (first && shift[q] == 1) {
-          alignas(simd::bytes) double lanes[W];
-          lanes[0] = src[q][nz - 1];
-          std::copy(src[q], src[q] + W - 1, lanes + 1);
-          f[q] = simd::load(lanes) + add[q];
-        } else if (last && shift[q] == -1) {
-          alignas(simd::bytes) double lanes[W];
-          std::copy(src[q] + z0 + 1, src[q] + z0 + W, lanes);
-          lanes[W - 1] = src[q][0];
-          f[q] = simd::load(lanes) + add[q];
-        } else {
-          f[q] = simd::load(in[q] + z0) + add[q];
-        }
+    // A chunk of W nodes, the last one reaching into the row's padding when nz is not a
+    // multiple of W (rows shorter than W included). In the first and last chunks the
+    // populations streaming across the periodic z boundary take one lane from the other
+    // end of the row.
+    const int real = std::min(W, nz - z0);  // lanes that are nodes
+    for (int q = 0; q < Q; ++q) {
+      if (first && shift[q] == 1) {
+        alignas(simd::bytes) double lanes[W];
+        lanes[0] = src[q][nz - 1];
+        std::copy(src[q], src[q] + W - 1, lanes + 1);
+        f[q] = simd::load(lanes) + add[q];
+      } else if (last && shift[q] == -1) {
+        alignas(simd::bytes) double lanes[W];
+        std::copy(src[q] + z0 + 1, src[q] + z0 + real, lanes);
+        lanes[real - 1] = src[q][0];
+        std::fill(lanes + real, lanes + W, w[q]);
+        f[q] = simd::load(lanes) + add[q];
+      } else {
+        f[q] = simd::load(in[q] + z0) + add[q];
       }
-      nu_v = simd::load(nu + z0);
-      fx_v = simd::load(fx + z0);
-      fy_v = simd::load(fy + z0);
-      fz_v = simd::load(fz + z0);
-    } else {
-      // Rows shorter than two chunks, or a partial last chunk: lane by lane.
-      for (int l = 0; l < W; ++l) {
-        const int z = std::min(z0 + l, nz - 1);  // lanes past the end repeat the last node
-        for (int q = 0; q < Q; ++q) {
-          int zs = z - shift[q];
-          zs = zs < 0 ? zs + nz : (zs >= nz ? zs - nz : zs);
-          f[q][l] = src[q][zs] + add[q];
-        }
-        nu_v[l] = nu[z];
-        fx_v[l] = fx[z];
-        fy_v[l] = fy[z];
-        fz_v[l] = fz[z];
-      }
+    }
+    nu_v = simd::load(nu + z0);
+    fx_v = simd::load(fx + z0);
+    fy_v = simd::load(fy + z0);
+    fz_v = simd::load(fz + z0);
+    if (real < W) {
+      // Padding lanes collide the fluid at rest (finite, never read by a node).
+      const vmask pad = lane_index >= static_cast<double>(real);
+      for (int q = 0; q < Q; ++q) f[q] = pad ? simd::broadcast(w[q]) : f[q];
+      nu_v = pad ? simd::broadcast(config_.viscosity) : nu_v;
+      fx_v = pad ? vdouble{} : fx_v;
+      fy_v = pad ? vdouble{} : fy_v;
+      fz_v = pad ? vdouble{} : fz_v;
     }
     vdouble u[3];
     collide_trt(f, nu_v, config_.magic, fx_v, fy_v, fz_v, velocity_out ? u : nullptr);
@@ -149,16 +155,8 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
           for (int l = 0; z0 + l < nz; ++l) out_u[l] = u[d][l];
       }
     }
-    if (z0 + W <= nz) {
-      if (streaming_stores) {
-        for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
-      } else {
-        for (int q = 0; q < Q; ++q) simd::store(out[q] + z0, f[q]);
-      }
-    } else {
-      for (int q = 0; q < Q; ++q)
-        for (int l = 0; z0 + l < nz; ++l) out[q][z0 + l] = f[q][l];
-    }
+    // Whole vectors into the padded, aligned rows (the padding lanes included).
+    for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
   }
 }
 
@@ -177,17 +175,27 @@ void FluidLattice::step(double* const velocity_out[3]) {
   ++steps_;
 }
 
+std::vector<double> FluidLattice::populations() const {
+  const std::size_t packed = packed_stride(nodes_);
+  std::vector<double> out(Q * packed, 0.0);
+  for (int q = 0; q < Q; ++q)
+    for (std::size_t n = 0; n < nodes_; ++n) out[q * packed + n] = f_[q * stride_ + padded(n)];
+  return out;
+}
+
 void FluidLattice::restore(const std::vector<double>& populations, std::int64_t steps) {
-  require(populations.size() == f_.size(), "checkpoint holds " + std::to_string(populations.size()) +
-                                               " populations, the lattice needs " + std::to_string(f_.size()));
-  std::copy(populations.begin(), populations.end(), f_.begin());
+  const std::size_t packed = packed_stride(nodes_);
+  require(populations.size() == Q * packed, "checkpoint holds " + std::to_string(populations.size()) +
+                                                " populations, the lattice needs " + std::to_string(Q * packed));
+  for (int q = 0; q < Q; ++q)
+    for (std::size_t n = 0; n < nodes_; ++n) f_[q * stride_ + padded(n)] = populations[q * packed + n];
   steps_ = steps;
 }
 
 NodeMoments FluidLattice::moments(std::size_t node) const {
   double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
   for (int q = 0; q < Q; ++q) {
-    const double fq = f_[q * stride_ + node];
+    const double fq = f_[q * stride_ + padded(node)];
     rho += fq;
     jx += fq * c[q][0];
     jy += fq * c[q][1];
@@ -203,7 +211,7 @@ double FluidLattice::total_mass() const {
     const double* fq = f_.data() + q * stride_;
     const long n = static_cast<long>(nodes_);
 #pragma omp parallel for reduction(+ : mass) schedule(static)
-    for (long i = 0; i < n; ++i) mass += fq[i];
+    for (long i = 0; i < n; ++i) mass += fq[padded(static_cast<std::size_t>(i))];
   }
   return mass;
 }
@@ -219,7 +227,7 @@ WallTraction FluidLattice::wall_traction() const {
       const double correction = 6.0 * w[q] * c[q][2] * u_wall;
       double exchanged = 0.0;
       for (int x = 0; x < config_.nx; ++x) {
-        const double* fq = f_.data() + q * stride_ + index(x, y, 0);
+        const double* fq = f_.data() + q * stride_ + padded_row(x, y);
         for (int z = 0; z < config_.nz; ++z) exchanged += 2.0 * fq[z] - correction;
       }
       for (int d = 0; d < 3; ++d) sum[d] += c[q][d] * exchanged;

@@ -5,14 +5,18 @@
 // viscosity and per-node body force (Guo). All quantities in lattice units:
 // dx = dt = 1, reference density 1.
 //
-// Layout: structure of arrays, population q of node n at q * stride + n (stride =
-// node count rounded up to the SIMD width), nodes
-// ordered x-major, z fastest (n = (x * ny + y) * nz + z). One step is a fused
-// pull-stream + TRT collision between two population arrays; the stored populations
-// are always post-collision.
+// Layout: nodes ordered x-major, z fastest (n = (x * ny + y) * nz + z) in every per-node
+// field (viscosity, force, velocity). The populations are structure of arrays with each
+// row of nz nodes padded to a multiple of the SIMD width (row_length), so that every row
+// starts aligned: population q of node (x, y, z) at q * stride + (x * ny + y) *
+// row_length + z. Unpadded, rows start at every alignment when nz is not a multiple of
+// the width, and the update ran 2-3 times slower per node (docs/performance.md). One
+// step is a fused pull-stream + TRT collision between two population arrays; the stored
+// populations are always post-collision.
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "solver/aligned_vector.hpp"
 
@@ -76,10 +80,12 @@ class FluidLattice {
   void step(double* const velocity_out[3] = nullptr);
 
   NodeMoments moments(std::size_t node) const;
-  // The whole state (post-collision populations and step count), for checkpoints.
-  const AlignedVector<double>& populations() const { return f_; }
+  // The whole state (post-collision populations and step count), for checkpoints, in the
+  // unpadded layout q * packed_stride + node (packed_stride: node count rounded up to the
+  // SIMD width), which checkpoints have always used.
+  std::vector<double> populations() const;
   void restore(const std::vector<double>& populations, std::int64_t steps);
-  double population(int q, std::size_t node) const { return f_[q * stride_ + node]; }
+  double population(int q, std::size_t node) const { return f_[q * stride_ + padded(node)]; }
   double total_mass() const;
   WallTraction wall_traction() const;
 
@@ -87,9 +93,16 @@ class FluidLattice {
   // Pull-stream and collide the nodes (x, y, 0..nz-1) into the next population array.
   void update_row(int x, int y, double* const velocity_out[3]);
 
+  // Where node n's populations sit in a padded population array.
+  std::size_t padded(std::size_t node) const { return node + node / config_.nz * (row_length_ - config_.nz); }
+  std::size_t padded_row(int x, int y) const {
+    return (static_cast<std::size_t>(x) * config_.ny + y) * row_length_;
+  }
+
   FluidConfig config_;
   std::size_t nodes_;
-  std::size_t stride_;  // distance between population arrays: nodes_ rounded up to the SIMD width
+  std::size_t row_length_;  // nz rounded up to the SIMD width
+  std::size_t stride_;      // distance between population arrays: nx * ny * row_length_
   std::int64_t steps_ = 0;
   AlignedVector<double> f_;
   AlignedVector<double> f_next_;

@@ -202,7 +202,7 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   CheckpointState s;
   s.case_json = state_defining_json(case_).dump();
   s.steps = fluid_.steps_done();
-  s.populations.assign(fluid_.populations().begin(), fluid_.populations().end());
+  s.populations = fluid_.populations();
   s.positions = x_;
   s.velocities = v_;
   s.forces = f_;
