@@ -29,8 +29,7 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
       try {
         sim.step();
       } catch (const std::runtime_error& e) {  // the per-step node guard
-        throw std::runtime_error("run stopped at step " + std::to_string(sim.steps_done()) + " (strain " +
-                                 std::to_string(sim.strain()) + "): " + e.what());
+        throw std::runtime_error(solver::run_stopped(sim.steps_done(), sim.strain(), e.what()));
       }
       solver::check_state(sim.observe(), sim.steps_done());
     } catch (const std::runtime_error& e) {

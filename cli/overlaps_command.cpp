@@ -6,7 +6,6 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "solver/membrane/cell_shapes.hpp"
 #include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/checkpoint.hpp"
 #include "solver/simulation/simulation_case.hpp"
@@ -17,7 +16,7 @@ namespace {
 
 struct OverlapsOptions {
   std::string checkpoint;
-  double spacing = 0.0;  // grid spacing in lattice units (0: a / 6)
+  double spacing = 0.0;  // grid spacing in lattice units (0: solver::overlap_grid_spacing)
 };
 
 void run_overlaps(const OverlapsOptions& o) {
@@ -27,13 +26,11 @@ void run_overlaps(const OverlapsOptions& o) {
       solver::case_from_json(nlohmann::json::parse(s.case_json), o.checkpoint + " (its case)");
   const solver::LatticeUnits u = solver::derive_lattice_units(c.flow, c.resolution);
   const double a = c.resolution.nodes_per_radius;
-  const solver::TriangleMesh mesh = c.shape == solver::CellShape::Sphere
-                                        ? solver::make_sphere(c.triangles, a)
-                                        : solver::make_biconcave_cell(c.triangles, a, c.profile);
+  const solver::TriangleMesh mesh = solver::reference_cell(c, a);
   long nodes = 0;
   for (const auto& cell : s.positions) nodes += static_cast<long>(cell.size());
   const solver::OverlapCount n = solver::count_overlaps(s.positions, mesh.triangles, u.nx, u.nz);
-  const double spacing = o.spacing > 0.0 ? o.spacing : a / 6.0;
+  const double spacing = o.spacing > 0.0 ? o.spacing : solver::overlap_grid_spacing(c.resolution.nodes_per_radius);
   const double volume = n.nodes_inside > 0 ? solver::overlap_volume_fraction(s.positions, mesh.triangles, u.nx, u.ny,
                                                                              u.nz, spacing)
                                            : 0.0;

@@ -19,8 +19,9 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("FluidLattice: " + what);
 }
 
-// The checkpoints' population stride: the node count rounded up to the SIMD width.
-std::size_t packed_stride(std::size_t nodes) { return (nodes + simd::width - 1) / simd::width * simd::width; }
+// n rounded up to a whole number of SIMD vectors: the padded row length, and the stride of
+// the checkpoints' unpadded population layout (node count rounded up).
+std::size_t whole_vectors(std::size_t n) { return (n + simd::width - 1) / simd::width * simd::width; }
 
 // Equilibrium populations for density rho and velocity u (second order in u).
 void equilibrium(double rho, double ux, double uy, double uz, double* feq) {
@@ -38,7 +39,7 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
-  row_length_ = (static_cast<std::size_t>(config.nz) + simd::width - 1) / simd::width * simd::width;
+  row_length_ = whole_vectors(static_cast<std::size_t>(config.nz));
   stride_ = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
   f_.resize(Q * stride_);  // zeros: the padding lanes start finite (they never feed a node)
   f_next_.resize(Q * stride_);
@@ -176,7 +177,7 @@ void FluidLattice::step(double* const velocity_out[3]) {
 }
 
 std::vector<double> FluidLattice::populations() const {
-  const std::size_t packed = packed_stride(nodes_);
+  const std::size_t packed = whole_vectors(nodes_);
   std::vector<double> out(Q * packed, 0.0);
   for (int q = 0; q < Q; ++q)
     for (std::size_t n = 0; n < nodes_; ++n) out[q * packed + n] = f_[q * stride_ + padded(n)];
@@ -184,7 +185,7 @@ std::vector<double> FluidLattice::populations() const {
 }
 
 void FluidLattice::restore(const std::vector<double>& populations, std::int64_t steps) {
-  const std::size_t packed = packed_stride(nodes_);
+  const std::size_t packed = whole_vectors(nodes_);
   require(populations.size() == Q * packed, "checkpoint holds " + std::to_string(populations.size()) +
                                                 " populations, the lattice needs " + std::to_string(Q * packed));
   for (int q = 0; q < Q; ++q)

@@ -81,7 +81,7 @@ class FluidLattice {
 
   NodeMoments moments(std::size_t node) const;
   // The whole state (post-collision populations and step count), for checkpoints, in the
-  // unpadded layout q * packed_stride + node (packed_stride: node count rounded up to the
+  // unpadded layout q * packed + node (packed: the node count rounded up to the
   // SIMD width), which checkpoints have always used.
   std::vector<double> populations() const;
   void restore(const std::vector<double>& populations, std::int64_t steps);

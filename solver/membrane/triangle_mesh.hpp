@@ -35,6 +35,7 @@ double winding_number(const Vec3& p, const std::vector<Vec3>& x, const std::vect
 // Axis-aligned bounding box of a point set (lo = hi = 0 for an empty set).
 struct Bounds {
   Vec3 lo, hi;
+  bool contains(const Vec3& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
 };
 Bounds bounding_box(const std::vector<Vec3>& x);
 

@@ -146,14 +146,18 @@ class CaseRun {
             << kept_rows << std::setprecision(17);  // exact round trip on resume
   }
 
+  // Keeps the state a guard tripped on (checkpoint_failed.bin); returns "; state written to PATH".
+  std::string saved_failed_state() const {
+    const std::string failed = opt_.output_dir + "/checkpoint_failed.bin";
+    sim_.save_checkpoint(failed);
+    return "; state written to " + failed;
+  }
+
   void advance(std::int64_t step) {
     try {
       sim_.step();
     } catch (const std::runtime_error& e) {
-      const std::string failed = opt_.output_dir + "/checkpoint_failed.bin";
-      sim_.save_checkpoint(failed);
-      throw std::runtime_error("run stopped at step " + std::to_string(step) + " (strain " +
-                               std::to_string(sim_.strain()) + "): " + e.what() + "; state written to " + failed);
+      throw std::runtime_error(run_stopped(step, sim_.strain(), e.what()) + saved_failed_state());
     }
   }
 
@@ -164,9 +168,7 @@ class CaseRun {
     try {
       check_state(o, step);
     } catch (const std::runtime_error& e) {
-      const std::string failed = opt_.output_dir + "/checkpoint_failed.bin";
-      sim_.save_checkpoint(failed);
-      throw std::runtime_error(std::string(e.what()) + "; state written to " + failed);
+      throw std::runtime_error(e.what() + saved_failed_state());
     }
     double vol = 0.0;
     for (const auto& cell : o.cells) vol = std::max(vol, std::abs(cell.volume_error));
@@ -242,7 +244,7 @@ class CaseRun {
     j["result"]["overlap_max_depth_dx"] = overlaps.max_depth;
     if (overlaps.nodes_inside > 0)
       j["result"]["overlap_volume_fraction"] = overlap_volume_fraction(
-          sim_.positions(), sim_.triangles(), u.nx, u.ny, u.nz, c_.resolution.nodes_per_radius / 6.0);
+          sim_.positions(), sim_.triangles(), u.nx, u.ny, u.nz, overlap_grid_spacing(c_.resolution.nodes_per_radius));
     j["provenance"] = formats::provenance_block();
     formats::write_json_atomically(opt_.output_dir + "/result.json", j);
     return j;

@@ -25,7 +25,7 @@ OverlapCount count_overlaps(const std::vector<std::vector<Vec3>>& x, const std::
       long inside = 0;
       for (const Vec3& p : x[i]) {
         const Vec3 q = p + shift;
-        if ((q.array() < bounds[j].lo.array()).any() || (q.array() > bounds[j].hi.array()).any()) continue;
+        if (!bounds[j].contains(q)) continue;
         if (winding_number(q, x[j], triangles) <= 0.5) continue;
         ++inside;
         double nearest = 1e300;
@@ -61,7 +61,7 @@ double overlap_volume_fraction(const std::vector<std::vector<Vec3>>& x, const st
           // The image of the point nearest to the cell across the periodic x and z.
           const Vec3 d = p - 0.5 * (bounds[c].lo + bounds[c].hi);
           const Vec3 q = p - Vec3(period_x * std::round(d.x() / period_x), 0.0, period_z * std::round(d.z() / period_z));
-          if ((q.array() < bounds[c].lo.array()).any() || (q.array() > bounds[c].hi.array()).any()) continue;
+          if (!bounds[c].contains(q)) continue;
           if (winding_number(q, x[c], triangles) > 0.5) ++inside;
         }
         if (inside > 1) extra += inside - 1;

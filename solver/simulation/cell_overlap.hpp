@@ -27,6 +27,10 @@ OverlapCount count_overlaps(const std::vector<std::vector<Vec3>>& x, const std::
 // the box [0, period_x) x [0, height) x [0, period_z) (lattice units). With spacing 1 about
 // 10 s for 102 cells of 642 nodes on one core; the sampling error is about one over the
 // square root of the number of grid points counted twice.
+// The grid spacing both result.json and `rbcal overlaps` use: a / 6 in lattice units (one
+// lattice spacing at N_a 6), so that the cost follows the box in cell radii, not N_a.
+inline double overlap_grid_spacing(int nodes_per_radius) { return nodes_per_radius / 6.0; }
+
 double overlap_volume_fraction(const std::vector<std::vector<Vec3>>& x, const std::vector<Triangle>& triangles,
                                double period_x, double height, double period_z, double spacing);
 

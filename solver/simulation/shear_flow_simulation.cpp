@@ -5,12 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
 #include "solver/simulation/cell_seeding.hpp"
 #include "solver/simulation/checkpoint.hpp"
+#include "solver/simulation/state_guards.hpp"
 
 namespace rbcal::solver {
 
@@ -25,11 +25,6 @@ FluidConfig fluid_config(const LatticeUnits& u, bool quiescent) {
   f.wall_velocity_bottom = quiescent ? 0.0 : -u.wall_speed;
   f.wall_velocity_top = quiescent ? 0.0 : u.wall_speed;
   return f;
-}
-
-TriangleMesh reference_cell(const SimulationCase& c, double radius) {
-  return c.shape == CellShape::Sphere ? make_sphere(c.triangles, radius)
-                                      : make_biconcave_cell(c.triangles, radius, c.profile);
 }
 
 }  // namespace
@@ -150,11 +145,7 @@ void ShearFlowSimulation::move_cells(double dt) {
   // fraction (whose scan-line grid follows their bounding boxes: a blow-up caught only
   // at the next recorded row once grew past 7 GB).
   const double mach = std::sqrt(3.0 * fastest);
-  if (!(mach < kMaxNodeMach)) {
-    std::ostringstream what;
-    what << "membrane-node Mach number " << mach << " exceeds " << kMaxNodeMach << " (the coupling went unstable)";
-    throw std::runtime_error(what.str());
-  }
+  if (!(mach < kMaxNodeMach)) throw std::runtime_error(node_mach_exceeded(mach));
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {
     for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += dt * v_[i][m];

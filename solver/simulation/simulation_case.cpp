@@ -10,6 +10,11 @@
 
 namespace rbcal::solver {
 
+TriangleMesh reference_cell(const SimulationCase& c, double radius) {
+  return c.shape == CellShape::Sphere ? make_sphere(c.triangles, radius)
+                                      : make_biconcave_cell(c.triangles, radius, c.profile);
+}
+
 std::string to_string(CellShape s) { return s == CellShape::Sphere ? "sphere" : "biconcave"; }
 std::string to_string(Integrator i) { return i == Integrator::Euler ? "euler" : "rk4"; }
 

@@ -70,6 +70,9 @@ SimulationCase read_case(const std::string& path);
 SimulationCase case_from_json(const nlohmann::json& j, const std::string& source);
 nlohmann::json case_to_json(const SimulationCase& c);
 
+// The case's cell at rest (shape, profile and triangle count) with the given radius.
+TriangleMesh reference_cell(const SimulationCase& c, double radius);
+
 std::string to_string(CellShape s);
 std::string to_string(Integrator i);
 
