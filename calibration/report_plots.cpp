@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -26,11 +25,7 @@ constexpr double kMilli = 1e3;  // Pa s -> mPa s
 std::string num(double x) { return formats::short_number(x, 9); }
 
 // For legends: four significant digits.
-std::string short_num(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", x);
-  return buffer;
-}
+std::string short_num(double x) { return formats::short_number(x, 4); }
 
 // A gnuplot double-quoted string.
 std::string quoted(const std::string& text) {

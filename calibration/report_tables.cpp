@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <stdexcept>
+
+#include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
 
@@ -15,10 +16,7 @@ constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 // Shortest round-trippable-enough text for a table (9 significant digits); empty for NaN.
 std::string number(double x) {
-  if (!std::isfinite(x)) return "";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", x);
-  return buffer;
+  return std::isfinite(x) ? formats::short_number(x, 9) : "";
 }
 
 class CsvFile {
