@@ -65,6 +65,7 @@ std::string SampleReport::brief_report() const {
     out += format("  MCMC        R-hat %.4f, ESS %.0f, tau %.3g, acceptance %.2f, %d steps x %zu chains x %d walkers, %s\n",
                   p.rhat, p.bulk_ess, p.autocorrelation_time, mc.acceptance_fraction, mc.steps, mc.chains.size(),
                   mc.chains.empty() ? 0 : mc.chains.front().walkers(), mc.converged ? "converged" : "NOT converged");
+    out += "  sampler     " + mc.sampler + "\n";
   }
   for (const auto& w : warnings) out += "  warning: " + w + "\n";
   return out;

@@ -119,7 +119,6 @@ class SampleCalibration {
     mo.posterior.setup = o_.setup;
     mo.start_fit = fit_options();
     mo.sampler = o_.sampler;
-    mo.sampler.min_steps = std::min(mo.sampler.min_steps, o_.sampler.max_steps);
     try {
       r.mcmc = calibrate_mcmc(r.sample, model_, mo);
       if (!r.mcmc->mcmc.converged) r.warnings.push_back("MCMC not converged: " + r.mcmc->mcmc.stop_reason);
@@ -225,6 +224,7 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"phi_max", phi_max},
           {"min_shear_rate_per_s", min_shear_rate},
           {"keep_out_of_hematocrit_order", keep_out_of_hematocrit_order},
+          {"sampler", to_string(sampler.sampler)},
           {"seed", sampler.seed},
           {"threads", sampler.threads},
           {"compare", compare},

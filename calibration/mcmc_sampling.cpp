@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "calibration/chain_diagnostics.hpp"
+#include "calibration/independence_sampler.hpp"
+#include "formats/short_number.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -112,46 +114,69 @@ Eigen::MatrixXd McmcResult::draws() const {
   return out;
 }
 
-McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std::string>& parameter_names,
-                            const McmcStart& start, const McmcOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  const int d = static_cast<int>(parameter_names.size());
-  if (start.center.size() != d || start.scale.size() != d)
-    throw std::invalid_argument("MCMC: start point and scale must have one entry per parameter");
-  if (options.chains < 1 || options.walkers < 2 || options.max_steps < 8)
-    throw std::invalid_argument("MCMC: need chains >= 1, walkers >= 2 and max_steps >= 8");
-  if (!(options.burn_in_fraction >= 0.0 && options.burn_in_fraction <= 0.9))
-    throw std::invalid_argument("MCMC: burn_in_fraction must lie in [0, 0.9]");
+std::string to_string(SamplerKind kind) { return kind == SamplerKind::Ensemble ? "ensemble" : "independence"; }
 
-  std::vector<EnsembleSampler> samplers;
-  for (int c = 0; c < options.chains; ++c)
-    samplers.emplace_back(log_density, initial_walkers(log_density, start, options, c),
-                          derived_seed(options.seed, c, 2), options.stretch_scale);
+SamplerKind sampler_from_string(const std::string& name) {
+  if (name == "ensemble") return SamplerKind::Ensemble;
+  if (name == "independence") return SamplerKind::Independence;
+  throw std::invalid_argument("unknown sampler '" + name + "' (expected ensemble or independence)");
+}
 
-  McmcResult result;
-  result.parameter_names = parameter_names;
-  const int threads =
-#ifdef _OPENMP
-      options.threads > 0 ? options.threads : omp_get_max_threads();
-#else
-      1;
-#endif
-  while (true) {
-    const int batch = std::min(result.steps == 0 ? std::max(options.min_steps, 8) : options.check_interval,
-                               options.max_steps - result.steps);
-    std::exception_ptr failure;
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-    for (int c = 0; c < options.chains; ++c) {
-      try {
-        samplers[c].advance(batch);
-      } catch (...) {
-#pragma omp critical
-        failure = std::current_exception();
+namespace {
+
+// Mean and covariance of the walkers' positions over steps [first, steps()) of all chains.
+MultivariateT proposal_from(const std::vector<EnsembleSampler>& samplers, int first, double dof) {
+  const int d = samplers.front().chain().dimension();
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
+  Eigen::MatrixXd second = Eigen::MatrixXd::Zero(d, d);
+  double n = 0.0;
+  Eigen::VectorXd x(d);
+  for (const auto& s : samplers)
+    for (int step = first; step < s.chain().steps(); ++step)
+      for (int w = 0; w < s.chain().walkers(); ++w) {
+        for (int p = 0; p < d; ++p) x(p) = s.chain().value(step, w, p);
+        mean += x;
+        second += x * x.transpose();
+        n += 1.0;
       }
+  mean /= n;
+  const Eigen::MatrixXd covariance = (second - n * mean * mean.transpose()) / (n - 1.0);
+  // A t with dof > 2 and this scale has dof / (dof - 2) times the pilot's covariance: wider
+  // than the posterior, with heavier tails, as an independence proposal must be.
+  return MultivariateT(mean, covariance, dof);
+}
+
+// Advances every sampler by `steps` in parallel over chains; the first exception wins.
+template <class Sampler>
+void advance_all(std::vector<Sampler>& samplers, int steps, int threads) {
+  std::exception_ptr failure;
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int c = 0; c < static_cast<int>(samplers.size()); ++c) {
+    try {
+      samplers[c].advance(steps);
+    } catch (...) {
+#pragma omp critical
+      failure = std::current_exception();
     }
-    if (failure) std::rethrow_exception(failure);
-    result.steps += batch;
-    result.burn_in_steps = static_cast<int>(options.burn_in_fraction * result.steps);
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+// Runs the samplers, checking the first parameter's R-hat and ESS, until converged or
+// max_steps; fills result's steps, burn-in, convergence, chains and acceptance.
+template <class Sampler>
+void run_until_converged(std::vector<Sampler>& samplers, const McmcOptions& options, int first_check,
+                         int check_interval, double burn_in_fraction, int max_steps, int threads,
+                         McmcResult& result) {
+  const std::string& name = result.parameter_names[0];
+  int next_check = std::max(first_check, 8);
+  while (true) {
+    const int done = samplers.front().chain().steps();
+    const int target = std::min(std::max(next_check, done), max_steps);
+    if (target > done) advance_all(samplers, target - done, threads);
+    result.steps = samplers.front().chain().steps();
+    next_check = result.steps + check_interval;
+    result.burn_in_steps = static_cast<int>(burn_in_fraction * result.steps);
     std::vector<std::vector<double>> walkers, ensembles;
     for (const auto& s : samplers) {
       auto series = s.chain().walker_series(0, result.burn_in_steps);
@@ -162,23 +187,102 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
     const double ess = bulk_effective_sample_size(walkers);
     if (rhat < options.rhat_target && ess >= options.ess_target) {
       result.converged = true;
-      result.stop_reason = "R-hat " + std::to_string(rhat) + " and bulk ESS " + std::to_string(ess) +
-                           " of " + parameter_names[0] + " reached the targets";
+      result.stop_reason = "R-hat " + std::to_string(rhat) + " and bulk ESS " + std::to_string(ess) + " of " +
+                           name + " reached the targets";
       break;
     }
-    if (result.steps >= options.max_steps) {
+    if (result.steps >= max_steps) {
       result.stop_reason = "step limit " + std::to_string(options.max_steps) + " reached with R-hat " +
-                           std::to_string(rhat) + " and bulk ESS " + std::to_string(ess) + " of " +
-                           parameter_names[0];
+                           std::to_string(rhat) + " and bulk ESS " + std::to_string(ess) + " of " + name;
       break;
     }
   }
+  result.chains.clear();
   double acceptance = 0.0;
   for (const auto& s : samplers) {
     acceptance += s.acceptance_fraction();
     result.chains.push_back(s.chain());
   }
-  result.acceptance_fraction = acceptance / options.chains;
+  result.acceptance_fraction = acceptance / samplers.size();
+}
+
+}  // namespace
+
+McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std::string>& parameter_names,
+                            const McmcStart& start, const McmcOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const int d = static_cast<int>(parameter_names.size());
+  if (start.center.size() != d || start.scale.size() != d)
+    throw std::invalid_argument("MCMC: start point and scale must have one entry per parameter");
+  if (options.chains < 1 || options.walkers < 2 || options.max_steps < 8)
+    throw std::invalid_argument("MCMC: need chains >= 1, walkers >= 2 and max_steps >= 8");
+  if (!(options.burn_in_fraction <= 0.9))
+    throw std::invalid_argument("MCMC: burn_in_fraction must not exceed 0.9");
+  const bool independence = options.sampler == SamplerKind::Independence;
+  if (independence && (options.pilot_steps < 8 || !(options.proposal_dof > 2.0)))
+    throw std::invalid_argument("MCMC: the independence sampler needs pilot_steps >= 8 and proposal_dof > 2");
+
+  std::vector<EnsembleSampler> ensembles;
+  for (int c = 0; c < options.chains; ++c)
+    ensembles.emplace_back(log_density, initial_walkers(log_density, start, options, c),
+                           derived_seed(options.seed, c, 2), options.stretch_scale);
+
+  McmcResult result;
+  result.parameter_names = parameter_names;
+  const int threads =
+#ifdef _OPENMP
+      options.threads > 0 ? options.threads : omp_get_max_threads();
+#else
+      1;
+#endif
+  auto or_default = [](double given, double fallback) { return given > 0.0 ? given : fallback; };
+  const auto run_ensembles = [&] {
+    result.sampler = "ensemble (stretch move, a = " + formats::short_number(options.stretch_scale) + ")";
+    run_until_converged(ensembles, options, static_cast<int>(or_default(options.min_steps, 500)),
+                        static_cast<int>(or_default(options.check_interval, 250)),
+                        options.burn_in_fraction >= 0.0 ? options.burn_in_fraction : 0.5, options.max_steps,
+                        threads, result);
+  };
+  const int pilot = std::min(options.pilot_steps, options.max_steps / 2);
+  if (!independence || pilot < 8) {
+    run_ensembles();
+  } else {
+    advance_all(ensembles, pilot, threads);
+    std::vector<IndependenceSampler> samplers;
+    std::string unfit;  // why the independence stage did not run
+    try {
+      const MultivariateT proposal = proposal_from(ensembles, pilot / 2, options.proposal_dof);
+      for (int c = 0; c < options.chains; ++c) {
+        Eigen::MatrixXd last(d, options.walkers);
+        for (int w = 0; w < options.walkers; ++w)
+          for (int p = 0; p < d; ++p) last(p, w) = ensembles[c].chain().value(pilot - 1, w, p);
+        samplers.emplace_back(log_density, last, proposal, derived_seed(options.seed, c, 3));
+      }
+    } catch (const std::invalid_argument& e) {
+      unfit = std::string("no proposal could be fitted to the pilot (") + e.what() + ")";
+    }
+    const int first_check = static_cast<int>(or_default(options.min_steps, 100));
+    if (unfit.empty()) {
+      // The first check's acceptance says whether the proposal fits; if not, the pilot goes on.
+      advance_all(samplers, std::max(8, std::min(first_check, options.max_steps - pilot)), threads);
+      double acceptance = 0.0;
+      for (const auto& s : samplers) acceptance += s.acceptance_fraction() / samplers.size();
+      if (acceptance < options.min_acceptance)
+        unfit = "the independence proposal was accepted in only " + formats::short_number(acceptance, 2) +
+                " of its first draws";
+    }
+    if (!unfit.empty()) {
+      run_ensembles();
+      result.sampler += "; " + unfit + ", so the pilot ensembles went on";
+    } else {
+      result.pilot_steps = pilot;
+      run_until_converged(samplers, options, first_check, static_cast<int>(or_default(options.check_interval, 50)),
+                          options.burn_in_fraction >= 0.0 ? options.burn_in_fraction : 0.1,
+                          options.max_steps - pilot, threads, result);
+      result.sampler = "independence Metropolis-Hastings (multivariate t, " + formats::short_number(options.proposal_dof) +
+                       " dof, fitted to a " + std::to_string(pilot) + "-step stretch-move pilot)";
+    }
+  }
   for (int p = 0; p < d; ++p) result.parameters.push_back(summarise(result, p, options.interval_level));
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;

@@ -1,8 +1,12 @@
 #pragma once
-// Running several independent ensembles ("chains") of the stretch-move sampler until the
-// diagnostics of the first parameter say stop (rank-normalised split R-hat < target and bulk
-// ESS >= target) or a step limit is reached; summaries of every parameter.
-// R-hat compares the independent ensembles (each ensemble's draws pooled over its walkers, split
+// Running several independent groups of walkers ("chains") until the diagnostics of the first
+// parameter say stop (rank-normalised split R-hat < target and bulk ESS >= target) or a step limit
+// is reached; summaries of every parameter. Two samplers:
+//   ensemble:     the stretch move (ensemble_sampler.hpp) throughout;
+//   independence: a short stretch-move pilot, then independence Metropolis-Hastings with a
+//                 multivariate t fitted to the pilot's second half (independence_sampler.hpp); if
+//                 that proposal is accepted too rarely, the pilot ensembles go on instead.
+// R-hat compares the independent groups (each group's draws pooled over its walkers, split
 // in halves by step): walkers of one ensemble are not independent chains. ESS and the
 // autocorrelation time use one series per walker (the within-walker autocorrelation, averaged over
 // walkers as emcee does, Foreman-Mackey et al. 2013), with the multi-chain estimator.
@@ -17,14 +21,22 @@
 
 namespace rbcal::calibration {
 
+enum class SamplerKind { Ensemble, Independence };
+std::string to_string(SamplerKind kind);
+SamplerKind sampler_from_string(const std::string& name);  // "ensemble" or "independence"
+
 struct McmcOptions {
-  int chains = 4;              // independent ensembles
-  int walkers = 16;            // per ensemble (at least 2 x dimension recommended)
+  SamplerKind sampler = SamplerKind::Independence;
+  int chains = 4;              // independent groups of walkers
+  int walkers = 16;            // per group (at least 2 x dimension recommended)
   double stretch_scale = 2.0;  // a of the stretch move (Goodman & Weare 2010)
   std::uint64_t seed = 20240601;
-  int min_steps = 500;       // first check after this many steps per walker
-  int check_interval = 250;  // steps between later checks
-  int max_steps = 20000;     // stop here even if not converged
+  // First check after this many steps per walker, later checks every check_interval steps
+  // (0: the sampler's default, 500 and 250 for the ensemble, 100 and 50 for the independence
+  // stage, whose draws are nearly independent). Steps of the pilot do not count here.
+  int min_steps = 0;
+  int check_interval = 0;
+  int max_steps = 20000;  // stop here even if not converged (per walker, the pilot included)
   double rhat_target = 1.01;
   double ess_target = 1000.0;
   int threads = 0;  // OpenMP threads over chains (0: OpenMP's default); the log density must be thread-safe
@@ -32,7 +44,15 @@ struct McmcOptions {
   double initial_spread = 3.0;  // walkers start at center + spread * scale * N(0, 1) (over-dispersed)
   // Fraction of the steps discarded as warm-up at every check (BDA3's default: the first half).
   // Starting near the MAP a smaller fraction (0.25) saves steps when each prediction is costly.
-  double burn_in_fraction = 0.5;
+  // Negative: the sampler's default, 0.5 for the ensemble and 0.1 for the independence stage
+  // (the pilot is discarded whole and its walkers start the stage already near the posterior).
+  double burn_in_fraction = -1.0;
+  // Independence sampler: stretch-move steps of the pilot (the proposal is fitted to their
+  // second half), the proposal's degrees of freedom, and the acceptance fraction at the first
+  // check below which the pilot ensembles take over.
+  int pilot_steps = 100;
+  double proposal_dof = 4.0;
+  double min_acceptance = 0.2;
 };
 
 // Where walkers start: around center with per-parameter scale (e.g. MAP and Laplace sd).
@@ -54,8 +74,10 @@ struct ParameterSummary {
 
 struct McmcResult {
   std::vector<std::string> parameter_names;
-  std::vector<EnsembleChain> chains;  // full history, burn-in included
-  int steps = 0;                      // per walker
+  std::string sampler;                // what sampled the chains, in words
+  int pilot_steps = 0;                // stretch-move steps before `chains` (independence sampler)
+  std::vector<EnsembleChain> chains;  // full history after the pilot, burn-in included
+  int steps = 0;                      // per walker, in `chains`
   int burn_in_steps = 0;              // burn_in_fraction of the steps, discarded by summaries and draws()
   bool converged = false;
   std::string stop_reason;

@@ -117,7 +117,9 @@ json mcmc_json(const McmcCalibration& m) {
                           {"bulk_ess", p.bulk_ess},
                           {"tail_ess", p.tail_ess},
                           {"autocorrelation_time", p.autocorrelation_time}});
-  json diagnostics = {{"converged", r.converged},
+  json diagnostics = {{"sampler", r.sampler},
+                      {"pilot_steps", r.pilot_steps},
+                      {"converged", r.converged},
                       {"stop_reason", r.stop_reason},
                       {"steps", r.steps},
                       {"burn_in_steps", r.burn_in_steps},

@@ -25,6 +25,7 @@ struct CalibrateOptions {
   std::string report = "calibration_report";
   double cell_radius_um = cal::kDefaultCellRadius * 1e6;
   bool no_plots = false;
+  std::string sampler = "independence";
 };
 
 // The equivalent command with every option spelled out, for the report's provenance.
@@ -35,7 +36,7 @@ std::string command_line(const CalibrateOptions& o) {
   for (const auto& s : j.samples) line << " --sample " << s;
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? " --fit-lambda" : "") << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
-       << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --chains " << j.sampler.chains << " --walkers "
+       << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --sampler " << o.sampler << " --chains " << j.sampler.chains << " --walkers "
        << j.sampler.walkers << " --mcmc-max-steps " << j.sampler.max_steps
        << (j.compare.empty() ? "" : " --compare " + j.compare) << " -o " << o.report
        << (o.no_plots ? " --no-plots" : "");
@@ -93,6 +94,12 @@ void add_calibrate_command(CLI::App& app) {
   c->add_option("--mcmc-max-steps", j.sampler.max_steps, "Stop the MCMC here even if not converged (steps per walker)")
       ->check(CLI::Range(8, 10000000))
       ->capture_default_str();
+  c->add_option("--sampler", o->sampler,
+                "MCMC sampler: independence (a short stretch-move pilot, then independence Metropolis-Hastings "
+                "with a multivariate t fitted to it; falls back to the ensemble if the fit is poor) or ensemble "
+                "(stretch move throughout)")
+      ->check(CLI::IsMember({"independence", "ensemble"}))
+      ->capture_default_str();
   c->add_option("--chains", j.sampler.chains, "Independent MCMC ensembles (R-hat compares them)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
@@ -106,6 +113,7 @@ void add_calibrate_command(CLI::App& app) {
     job.report_folder = o->report;
     job.setup.cell_radius = o->cell_radius_um * 1e-6;
     job.report.plots = !o->no_plots;
+    job.sampler.sampler = cal::sampler_from_string(o->sampler);
     job.command_line = command_line(*o);
     cal::run_calibration_job(job, std::cout);
   });

@@ -61,7 +61,7 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
                       const std::vector<std::string>& samples, double lambda, bool fit_lambda, double cell_radius_um,
                       double plateau_min_shear_rate, double phi_max, double min_shear_rate, bool keep_out_of_order,
                       std::uint64_t seed, int threads, int mcmc_max_steps, int chains, int walkers,
-                      const std::string& compare, const std::string& report, bool plots) {
+                      const std::string& sampler, const std::string& compare, const std::string& report, bool plots) {
   Calibration c;
   cal::CalibrationJobOptions& o = c.options;
   o.data_file = data;
@@ -80,6 +80,11 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
   o.sampler.max_steps = mcmc_max_steps;
   o.sampler.chains = chains;
   o.sampler.walkers = walkers;
+  try {
+    o.sampler.sampler = cal::sampler_from_string(sampler);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());
+  }
   o.compare = compare;
   o.report.plots = plots;
   o.command_line = "rbcal.calibrate (Python)";
@@ -158,7 +163,7 @@ void bind_calibration(py::module_& m) {
         py::arg("fit_lambda") = false, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
         py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
         py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
-        py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 16, py::arg("compare") = "",
+        py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 16, py::arg("sampler") = "independence", py::arg("compare") = "",
         py::arg("report") = "", py::arg("plots") = false,
         "G_s of each sample in a rheometer CSV against a surrogate file, by the alpha method, the direct fit and MCMC "
         "(the options and defaults of `rbcal calibrate`); report: also write the report folder there");

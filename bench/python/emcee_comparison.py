@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Side by side: rbcal's ensemble sampler and emcee (Debian python3-emcee) on the same
-posterior, the log posterior of rbcal.calibrate called through the Python module.
+"""Side by side: rbcal's two samplers (independence, the default, and the stretch-move
+ensemble) and emcee (Debian python3-emcee) on the same posterior, the log posterior of
+rbcal.calibrate called through the Python module.
 
 Posterior: a sample of tests/calibration/data/synthetic_rheometer.csv on the surrogate of
 tests/surrogate/data/tiny_library (the shipped sample cannot be calibrated on the current
@@ -10,7 +11,9 @@ fixed (the sample's plasma rows rewritten with sd 0).
 
 Both samplers: one thread, the same number of walkers in all (64: rbcal 4 ensembles x 16,
 emcee one ensemble of 64), at most the same number of steps (rbcal stops earlier once
-R-hat < 1.01 and ESS >= 1000), the first half discarded. ESS of
+R-hat < 1.01 and ESS >= 1000), emcee's first half discarded (rbcal discards its own
+burn-in: the first half for the ensemble, the pilot and 10 % after it for the independence
+sampler). ESS of
 ln G_s by one and the same estimator for both (rbcal.chain_diagnostics: bulk ESS, walkers
 as chains). Usage (from the repository root, after the build):
     PYTHONPATH=build/python /usr/bin/python3 bench/python/emcee_comparison.py [--steps N] [--rounds R]
@@ -53,16 +56,28 @@ def quantiles(x):
     return np.quantile(x, [0.025, 0.5, 0.975])
 
 
-def run(data, surrogate, steps, seed):
-    walkers, ensembles = 16, 4
+def run_rbcal(data, surrogate, steps, seed, sampler, walkers, ensembles):
     t0 = time.perf_counter()
     cal = rbcal.calibrate(str(data), surrogate, method="mcmc", samples=["intact"], mcmc_max_steps=steps,
-                          chains=ensembles, walkers=walkers, threads=1, min_shear_rate=0.0, seed=seed)
-    rbcal_seconds = time.perf_counter() - t0
+                          chains=ensembles, walkers=walkers, threads=1, min_shear_rate=0.0, seed=seed,
+                          sampler=sampler)
+    seconds = time.perf_counter() - t0
+    diagnostics = cal.samples[0]["methods"]["mcmc"]["diagnostics"]
+    assert diagnostics["sampler"].startswith(sampler), diagnostics["sampler"]
+    return cal, seconds, cal.chains("intact"), diagnostics["pilot_steps"] + diagnostics["steps"]
+
+
+def run(data, surrogate, steps, seed):
+    walkers, ensembles = 16, 4
+    out = {}
+    for who in ("independence", "ensemble"):
+        cal, seconds, pooled, n = run_rbcal(data, surrogate, steps, seed, who, walkers, ensembles)
+        out[f"{who}_seconds"] = seconds
+        out[f"{who}_steps"] = n
+        out[f"{who}_ess"] = rbcal.chain_diagnostics(walker_chains(pooled[:, :, 0], walkers))["bulk_ess"]
+        out[f"{who}_q"] = quantiles(pooled[:, :, 0].ravel())
+    out["sd"] = np.std(pooled[:, :, 0].ravel())
     names = cal.parameter_names("intact")
-    pooled = cal.chains("intact")
-    ln_gs_rbcal = walker_chains(pooled[:, :, 0], walkers)
-    rbcal_draws = pooled[:, :, 0].ravel()
     lp = cal.log_posterior("intact")
 
     # emcee: 64 walkers started where rbcal's ensembles ended their burn-in's first draw.
@@ -73,16 +88,10 @@ def run(data, surrogate, steps, seed):
     emcee_seconds = time.perf_counter() - t0
     chain = sampler.get_chain(discard=steps // 2)  # steps x walkers x dim
     ln_gs_emcee = chain[:, :, 0].T
-    ess_r = rbcal.chain_diagnostics(ln_gs_rbcal)["bulk_ess"]
-    ess_e = rbcal.chain_diagnostics(ln_gs_emcee)["bulk_ess"]
-    return {
-        "parameters": len(names),
-        "rbcal_steps": pooled.shape[1] // walkers * 2, "emcee_steps": steps,
-        "rbcal_seconds": rbcal_seconds, "emcee_seconds": emcee_seconds,
-        "rbcal_ess": ess_r, "emcee_ess": ess_e,
-        "rbcal_q": quantiles(rbcal_draws), "emcee_q": quantiles(ln_gs_emcee.ravel()),
-        "sd": np.std(rbcal_draws),
-    }
+    out.update({"emcee_steps": steps, "emcee_seconds": emcee_seconds,
+                "emcee_ess": rbcal.chain_diagnostics(ln_gs_emcee)["bulk_ess"],
+                "emcee_q": quantiles(ln_gs_emcee.ravel())})
+    return out
 
 
 def main():
@@ -97,24 +106,28 @@ def main():
         subprocess.run([exe, "surrogate", "build", str(ROOT / "tests/surrogate/data/tiny_library"), "-o", surrogate],
                        check=True, capture_output=True)
         cases = [("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)), ("ln G_s, ln eta0", DATA)]
-        print(f"{args.steps} steps x 64 walkers, first half discarded, {args.rounds} rounds (medians), 1 thread")
+        print(f"at most {args.steps} steps x 64 walkers, {args.rounds} rounds (medians), 1 thread; steps: "
+              "per walker, pilot included")
         print("| posterior | sampler | steps | seconds | bulk ESS of ln G_s | ESS / s | q2.5, q50, q97.5 of ln G_s |")
         print("|---|---|---|---|---|---|---|")
         for label, data in cases:
             results = [run(data, surrogate, args.steps, seed=100 + r) for r in range(args.rounds)]
-            for who in ("rbcal", "emcee"):
+            for who in ("independence", "ensemble", "emcee"):
                 sec = np.median([r[f"{who}_seconds"] for r in results])
                 ess = np.median([r[f"{who}_ess"] for r in results])
                 rate = np.median([r[f"{who}_ess"] / r[f"{who}_seconds"] for r in results])
                 q = results[0][f"{who}_q"]
                 n = int(np.median([r[f"{who}_steps"] for r in results]))
-                print(f"| {label} | {who} | {n} | {sec:.3f} | {ess:.0f} | {rate:.0f} | {q[0]:.4f}, {q[1]:.4f}, {q[2]:.4f} |")
-            ratio = np.median([(r["rbcal_ess"] / r["rbcal_seconds"]) / (r["emcee_ess"] / r["emcee_seconds"])
-                               for r in results])
+                name = who if who == "emcee" else f"rbcal {who}"
+                print(f"| {label} | {name} | {n} | {sec:.3f} | {ess:.0f} | {rate:.0f} | {q[0]:.4f}, {q[1]:.4f}, {q[2]:.4f} |")
             r0 = results[0]
-            mc_error = r0["sd"] / np.sqrt(min(r0["rbcal_ess"], r0["emcee_ess"]))
-            print(f"|  | ratio rbcal / emcee (ESS per second) | | | | {ratio:.2f} | medians differ by "
-                  f"{abs(r0['rbcal_q'][1] - r0['emcee_q'][1]) / mc_error:.2f} Monte Carlo errors |")
+            for who in ("independence", "ensemble"):
+                ratio = np.median([(r[f"{who}_ess"] / r[f"{who}_seconds"]) / (r["emcee_ess"] / r["emcee_seconds"])
+                                   for r in results])
+                # Monte Carlo error of the difference of two medians: sqrt(pi / 2) sd / sqrt(ESS) each.
+                mc_error = np.sqrt(np.pi / 2) * r0["sd"] * np.sqrt(1 / r0[f"{who}_ess"] + 1 / r0["emcee_ess"])
+                print(f"|  | ratio rbcal {who} / emcee (ESS per second) | | | | {ratio:.2f} | medians differ by "
+                      f"{abs(r0[f'{who}_q'][1] - r0['emcee_q'][1]) / mc_error:.2f} Monte Carlo errors |")
 
 
 if __name__ == "__main__":

@@ -68,13 +68,26 @@ SampleData small_sample(const AnalyticViscosityModel& model, double discrepancy,
 
 }  // namespace
 
-TEST(McmcQuadrature, OneDimensionalPosteriorOfLnShearModulus) {
+namespace rbcal::calibration {
+// Names the parameter in the test list (gtest would print its bytes).
+void PrintTo(SamplerKind kind, std::ostream* out) { *out << to_string(kind); }
+}  // namespace rbcal::calibration
+
+// Both samplers: the independence sampler (the default) and the stretch-move ensemble.
+class McmcQuadrature : public testing::TestWithParam<SamplerKind> {};
+
+INSTANTIATE_TEST_SUITE_P(Samplers, McmcQuadrature, testing::Values(SamplerKind::Independence, SamplerKind::Ensemble),
+                         [](const testing::TestParamInfo<SamplerKind>& i) { return to_string(i.param); });
+
+TEST_P(McmcQuadrature, OneDimensionalPosteriorOfLnShearModulus) {
   AnalyticViscosityModel model;
   const SampleData sample = small_sample(model, 0.0, 101);
   McmcCalibrationOptions options;
+  options.sampler.sampler = GetParam();
   options.sampler.seed = 7;
   const McmcCalibration result = calibrate_mcmc(sample, model, options);
   ASSERT_TRUE(result.mcmc.converged) << result.mcmc.stop_reason;
+  EXPECT_EQ(result.mcmc.sampler.substr(0, to_string(GetParam()).size()), to_string(GetParam())) << result.mcmc.sampler;
 
   const LogPosterior posterior(model, sample.plasma.eta0, result.points, result.posterior);
   const double center = result.start_fit.estimate(0), width = 10.0 * result.start_fit.ln_shear_modulus_sd;
@@ -86,14 +99,16 @@ TEST(McmcQuadrature, OneDimensionalPosteriorOfLnShearModulus) {
   expect_quantiles_match(normalised(x, log_density), result.mcmc.parameters[0], result.mcmc.parameter_draws(0));
 }
 
-TEST(McmcQuadrature, TwoDimensionalPosteriorWithModelDiscrepancy) {
+TEST_P(McmcQuadrature, TwoDimensionalPosteriorWithModelDiscrepancy) {
   AnalyticViscosityModel model;
   const SampleData sample = small_sample(model, 0.05, 202);
   McmcCalibrationOptions options;
+  options.sampler.sampler = GetParam();
   options.posterior.fit_discrepancy = true;
   options.sampler.seed = 8;
   const McmcCalibration result = calibrate_mcmc(sample, model, options);
   ASSERT_TRUE(result.mcmc.converged) << result.mcmc.stop_reason;
+  EXPECT_EQ(result.mcmc.sampler.substr(0, to_string(GetParam()).size()), to_string(GetParam())) << result.mcmc.sampler;
   ASSERT_EQ(result.mcmc.parameter_names.size(), 2u);
 
   // Quadrature on a grid covering the draws generously; marginals by summing over the other axis.
