@@ -16,6 +16,7 @@ struct SimulateOptions {
   bool quiet = false;
   bool resume = false;
   long long max_steps = 0;
+  int coupling_interval = 0;
 };
 
 void run_simulate(const SimulateOptions& o) {
@@ -27,6 +28,7 @@ void run_simulate(const SimulateOptions& o) {
   ro.progress = o.quiet ? nullptr : &std::cerr;
   ro.resume = o.resume;
   ro.max_steps = o.max_steps;
+  ro.coupling_interval = o.coupling_interval;
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
   if (!j.contains("result")) {
@@ -60,6 +62,11 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_flag("--resume", o->resume, "Continue from OUTPUT/checkpoint.bin if it exists (bit-identical)");
   cmd->add_option("--max-steps", o->max_steps, "Stop after this many lattice steps, with a checkpoint (0: to the end)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--coupling-interval", o->coupling_interval,
+                  "Advance the membrane every K fluid steps instead of the case's numerics.coupling_interval; with "
+                  "--resume, continue a checkpoint written under another interval (e.g. 1 after a late instability "
+                  "at 2). Recorded in coupling_interval_changes.json and result.json")
+      ->check(CLI::Range(1, 1000));
   cmd->callback([o] { run_simulate(*o); });
 }
 

@@ -4,6 +4,8 @@
 # CASE.json...`. For long studies in the background (one per core, OMP_NUM_THREADS=1).
 # RBCAL names the executable (default build/bin/rbcal); point it at a copy so that
 # rebuilding the tree meanwhile does not change the solver half-way through a queue.
+# A run that the node Mach guard stops at a coupling interval above 1 is continued at
+# interval 1 from its last checkpoint (rbcal simulate --coupling-interval 1).
 set -uo pipefail
 out="$1"; shift
 rbcal="${RBCAL:-$(cd "$(dirname "$0")/.." && pwd)/build/bin/rbcal}"
@@ -12,6 +14,19 @@ for c in "$@"; do
   name="$(basename "$c" .json)"
   if [ -f "$out/$name.out/result.json" ]; then echo "$name: done before"; continue; fi
   echo "$name: start $(date -u +%FT%TZ)"
-  "$rbcal" simulate "$c" -o "$out/$name.out" -q --resume || echo "$name: FAILED (status $?)"
+  run="$out/$name.out"
+  # A run that went unstable at a coupling interval above 1 continues at 1 from its last
+  # checkpoint (equivalent: docs/library.md); once switched, it stays at 1 on later resumes.
+  if [ -f "$run/coupling_interval_changes.json" ]; then
+    "$rbcal" simulate "$c" -o "$run" -q --resume --coupling-interval 1 || echo "$name: FAILED (status $?)"
+  elif ! "$rbcal" simulate "$c" -o "$run" -q --resume; then
+    if [ -f "$run/checkpoint_failed.bin" ] && [ -f "$run/checkpoint.bin" ] &&
+       grep -Eq '"coupling_interval": *([2-9]|[1-9][0-9])' "$c"; then
+      echo "$name: unstable at its coupling interval; continuing at 1 from the last checkpoint"
+      "$rbcal" simulate "$c" -o "$run" -q --resume --coupling-interval 1 || echo "$name: FAILED (status $?)"
+    else
+      echo "$name: FAILED"
+    fi
+  fi
   echo "$name: end $(date -u +%FT%TZ)"
 done

@@ -64,13 +64,22 @@ struct WindowSamples {
   }
 };
 
+SimulationCase with_coupling_interval(SimulationCase c, int interval) {
+  if (interval > 0) c.coupling_interval = interval;
+  return c;
+}
+
 // One case from its first (or resumed) step to its result, as a sequence of named steps
 // (the shape of Ceres' trust-region minimizer): schedule, resume, record, snapshot,
 // checkpoint, progress, result.
 class CaseRun {
  public:
   CaseRun(const SimulationCase& c, const RunOptions& opt)
-      : c_(c), opt_(opt), start_(std::chrono::steady_clock::now()), sim_(c), window_{c.window, {}, {}, {}, {}} {
+      : c_(c),
+        opt_(opt),
+        start_(std::chrono::steady_clock::now()),
+        sim_(with_coupling_interval(c, opt.coupling_interval)),
+        window_{c.window, {}, {}, {}, {}} {
     if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
     fs::create_directories(opt.output_dir);
     const double gamma = sim_.units().shear_rate;
@@ -83,7 +92,9 @@ class CaseRun {
 
   nlohmann::json run() {
     announce();
-    const std::string kept_rows = opt_.resume && fs::exists(checkpoint_path()) ? resume() : "";
+    const bool resuming = opt_.resume && fs::exists(checkpoint_path());
+    if (!resuming) start_interval_changes();
+    const std::string kept_rows = resuming ? resume() : "";
     open_series(kept_rows);
     if (vtk_every_) fs::create_directories(opt_.output_dir + "/vtk");
     if (vtk_every_ && first_step_ == 1) snapshot(0);
@@ -108,6 +119,23 @@ class CaseRun {
 
  private:
   std::string checkpoint_path() const { return opt_.output_dir + "/checkpoint.bin"; }
+  std::string interval_changes_path() const { return opt_.output_dir + "/coupling_interval_changes.json"; }
+
+  // A fresh run forgets earlier changes, and records its own if it overrides the case.
+  void start_interval_changes() const {
+    fs::remove(interval_changes_path());
+    const int interval = sim_.simulation_case().coupling_interval;
+    if (interval != c_.coupling_interval)
+      formats::write_json_atomically(interval_changes_path(),
+                                     nlohmann::json::array({{{"at_strain", 0.0}, {"from", c_.coupling_interval},
+                                                             {"to", interval}}}));
+  }
+
+  // The changes of coupling interval made on resuming, oldest first (empty: none).
+  nlohmann::json interval_changes() const {
+    return fs::exists(interval_changes_path()) ? formats::read_json_file(interval_changes_path())
+                                               : nlohmann::json::array();
+  }
   std::string series_path() const { return opt_.output_dir + "/series.csv"; }
 
   void announce() const {
@@ -120,8 +148,17 @@ class CaseRun {
   // Restores the checkpoint and returns the series rows up to it (later ones are recomputed),
   // with their window samples kept.
   std::string resume() {
-    sim_.restore_checkpoint(checkpoint_path());
+    const int saved_interval = sim_.restore_checkpoint(checkpoint_path(), opt_.coupling_interval > 0);
     first_step_ = sim_.steps_done() + 1;
+    const int interval = sim_.simulation_case().coupling_interval;
+    if (saved_interval != interval) {
+      nlohmann::json changes = interval_changes();
+      changes.push_back({{"at_strain", sim_.strain()}, {"from", saved_interval}, {"to", interval}});
+      formats::write_json_atomically(interval_changes_path(), changes);
+      if (opt_.progress)
+        *opt_.progress << "  coupling interval " << saved_interval << " -> " << interval << " from strain "
+                       << sim_.strain() << "\n";
+    }
     std::ifstream old(series_path());
     std::string line, kept;
     std::getline(old, line);
@@ -245,6 +282,8 @@ class CaseRun {
     if (overlaps.nodes_inside > 0)
       j["result"]["overlap_volume_fraction"] = overlap_volume_fraction(
           sim_.positions(), sim_.triangles(), u.nx, u.ny, u.nz, overlap_grid_spacing(c_.resolution.nodes_per_radius));
+    if (const nlohmann::json changes = interval_changes(); !changes.empty())
+      j["result"]["coupling_interval_changes"] = changes;
     j["provenance"] = formats::provenance_block();
     formats::write_json_atomically(opt_.output_dir + "/result.json", j);
     return j;

@@ -26,6 +26,12 @@ struct RunOptions {
   double progress_seconds = 5.0;     // between progress lines
   bool resume = false;               // continue from output_dir/checkpoint.bin if present
   std::int64_t max_steps = 0;        // stop after this many steps, with a checkpoint (0: run to the end)
+  // > 0: advance the membrane every this many fluid steps instead of the case's
+  // numerics.coupling_interval, and resume from a checkpoint written under another interval
+  // (e.g. 1 after a late instability at 2). Each change is kept in
+  // coupling_interval_changes.json and reported in result.json; the case block keeps the
+  // case's own value.
+  int coupling_interval = 0;
 };
 
 // Returns the result JSON (also written to result.json), or, when max_steps or a signal

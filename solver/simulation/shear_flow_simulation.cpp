@@ -201,10 +201,15 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   write_checkpoint(path, s);
 }
 
-void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
+int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_coupling_interval) {
   CheckpointState s = read_checkpoint(path);
-  if (s.case_json != state_defining_json(case_).dump())
-    throw std::runtime_error("checkpoint " + path + " belongs to a different case");
+  nlohmann::json saved = nlohmann::json::parse(s.case_json), ours = state_defining_json(case_);
+  const int saved_interval = saved["numerics"].value("coupling_interval", 1);
+  if (any_coupling_interval) {
+    saved["numerics"].erase("coupling_interval");
+    ours["numerics"].erase("coupling_interval");
+  }
+  if (saved != ours) throw std::runtime_error("checkpoint " + path + " belongs to a different case");
   // The inside fraction is rebuilt from the positions it was built from before the stop.
   const bool contrast = case_.flow.viscosity_ratio != 1.0;
   if (s.positions.size() != x_.size() || (contrast && s.indicator_positions.size() != x_.size()))
@@ -218,15 +223,18 @@ void ShearFlowSimulation::restore_checkpoint(const std::string& path) {
   v_ = std::move(s.velocities);
   f_ = std::move(s.forces);
   // Within a coupling interval the force field is the one spread at its start, from the
-  // positions and forces the checkpoint holds.
-  if (fluid_.steps_done() % case_.coupling_interval != 0) {
+  // positions and forces the checkpoint holds. (A run resumed under another interval
+  // spreads it from them too: its next membrane update may be steps away.)
+  if (fluid_.steps_done() % case_.coupling_interval != 0 || saved_interval != case_.coupling_interval) {
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     fluid_.clear_force();
     spread_forces(case_.kernel, order_, fluid_);
   }
-  if (!contrast) return;
-  x_indicator_ = std::move(s.indicator_positions);
-  rebuild_viscosity();
+  if (contrast) {
+    x_indicator_ = std::move(s.indicator_positions);
+    rebuild_viscosity();
+  }
+  return saved_interval;
 }
 
 Observables ShearFlowSimulation::observe() const {

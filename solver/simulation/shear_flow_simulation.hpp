@@ -69,7 +69,11 @@ class ShearFlowSimulation {
   // Checkpoints (checkpoint.hpp): restoring continues bit-identically.
   void save_checkpoint(const std::string& path) const;
   // Throws if the checkpoint belongs to another case or lattice.
-  void restore_checkpoint(const std::string& path);
+  // Throws if the checkpoint belongs to another case. With any_coupling_interval, a
+  // checkpoint written under another numerics.coupling_interval is accepted (the membrane
+  // step is a numerical choice, shown not to change eta_re: docs/library.md). Returns the
+  // coupling interval the checkpoint was written under.
+  int restore_checkpoint(const std::string& path, bool any_coupling_interval = false);
 
   double strain() const { return static_cast<double>(fluid_.steps_done()) * units_.shear_rate; }
   std::int64_t steps_done() const { return fluid_.steps_done(); }

@@ -81,3 +81,43 @@ TEST(Resume, ShippedDenseExampleRestartsBitIdentically) {
   c.vtk_interval = 0.0;
   expect_resume_equals_straight(c, "dense", 27);
 }
+
+// A run at coupling interval 2 stopped part-way continues at interval 1 only when asked
+// (RunOptions::coupling_interval, `rbcal simulate --resume --coupling-interval 1`), and its
+// result says from which strain; the case block keeps the case's own interval.
+TEST(Resume, ContinuesUnderAnotherCouplingIntervalOnlyWhenAsked) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "rbcal_resume_test_interval";
+  fs::remove_all(root);
+  SimulationCase c = small_case();
+  c.coupling_interval = 2;
+  RunOptions straight;
+  straight.output_dir = (root / "straight").string();
+  const nlohmann::json a = run_case(c, straight);
+  EXPECT_FALSE(a["result"].contains("coupling_interval_changes"));
+
+  RunOptions part;
+  part.output_dir = (root / "switched").string();
+  part.max_steps = 37;
+  ASSERT_EQ(run_case(c, part)["status"], "interrupted");
+  part.max_steps = 0;
+  part.resume = true;
+  SimulationCase other = c;
+  other.coupling_interval = 1;
+  EXPECT_THROW(run_case(other, part), std::runtime_error);  // not without asking
+
+  part.coupling_interval = 1;
+  const nlohmann::json b = run_case(c, part);
+  ASSERT_TRUE(b["result"].contains("coupling_interval_changes")) << b.dump();
+  const nlohmann::json& change = b["result"]["coupling_interval_changes"][0];
+  EXPECT_EQ(change["from"], 2);
+  EXPECT_EQ(change["to"], 1);
+  EXPECT_GT(change["at_strain"].get<double>(), 0.0);
+  EXPECT_LT(change["at_strain"].get<double>(), c.strain_end);
+  EXPECT_EQ(b["numerics"]["coupling_interval"], 2);
+  // The membrane step is a numerical choice: eta_re - 1 moves by far less than 1 %.
+  const double sp_a = a["result"]["eta_re"].get<double>() - 1.0, sp_b = b["result"]["eta_re"].get<double>() - 1.0;
+  EXPECT_NE(sp_a, sp_b);
+  EXPECT_NEAR(sp_b, sp_a, 0.01 * sp_a);
+  fs::remove_all(root);
+}
