@@ -1,7 +1,11 @@
 // `rbcal overlaps CHECKPOINT`: how far the membranes of a saved state reach into other
 // cells (nodes inside another cell, the deepest, the volume claimed twice). For runs
-// written before result.json carried these figures, and for states mid-run.
+// written before result.json carried these figures, and for states mid-run. It also
+// names the fastest node, where it sits and how close another cell comes: for the states
+// a run keeps when its node Mach guard trips (checkpoint_failed.bin).
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -18,6 +22,55 @@ struct OverlapsOptions {
   std::string checkpoint;
   double spacing = 0.0;  // grid spacing in lattice units (0: solver::overlap_grid_spacing)
 };
+
+// The node with the largest speed, its distance to the nearer wall, and the nearest node
+// of another cell (periodic in x and z), in lattice spacings.
+void print_fastest_node(const solver::CheckpointState& s, const solver::LatticeUnits& u,
+                        const solver::TriangleMesh& mesh) {
+  std::size_t cell = 0, node = 0;
+  double fastest = -1.0;
+  for (std::size_t i = 0; i < s.velocities.size(); ++i)
+    for (std::size_t m = 0; m < s.velocities[i].size(); ++m)
+      if (s.velocities[i][m].norm() > fastest) {
+        fastest = s.velocities[i][m].norm();
+        cell = i;
+        node = m;
+      }
+  if (fastest < 0.0) return;
+  const solver::Vec3& p = s.positions[cell][node];
+  auto wrapped = [](double d, double n) { return d - n * std::round(d / n); };
+  double nearest = std::numeric_limits<double>::infinity();
+  std::size_t other = 0;
+  for (std::size_t i = 0; i < s.positions.size(); ++i) {
+    if (i == cell) continue;
+    for (const solver::Vec3& q : s.positions[i]) {
+      const double d = std::hypot(wrapped(q.x() - p.x(), u.nx), q.y() - p.y(), wrapped(q.z() - p.z(), u.nz));
+      if (d < nearest) {
+        nearest = d;
+        other = i;
+      }
+    }
+  }
+  // Walls at y = -1/2 and ny - 1/2 (immersed_boundary.hpp).
+  const double wall = std::min(p.y() + 0.5, u.ny - 0.5 - p.y());
+  std::printf("  fastest node               cell %zu node %zu, Mach %.3g, %.2f spacings from a wall, nearest node of "
+              "another cell (%zu) %.2f spacings away\n",
+              cell, node, fastest * std::sqrt(3.0), wall, other, nearest);
+  // Its cell's edges against the rest shape: a crumpled mesh shows as edges far from it.
+  double shortest = 1e300, longest = 0.0, shortest0 = 1e300, longest0 = 0.0;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const int i = t[e], j = t[(e + 1) % 3];
+      const double now = (s.positions[cell][i] - s.positions[cell][j]).norm();
+      const double rest = (mesh.vertices[i] - mesh.vertices[j]).norm();
+      shortest = std::min(shortest, now / rest);
+      longest = std::max(longest, now / rest);
+      shortest0 = std::min(shortest0, rest);
+      longest0 = std::max(longest0, rest);
+    }
+  std::printf("  its cell's edges           %.2f to %.2f times their rest length (rest %.2f to %.2f spacings)\n",
+              shortest, longest, shortest0, longest0);
+}
 
 void run_overlaps(const OverlapsOptions& o) {
   const solver::CheckpointState s = solver::read_checkpoint(o.checkpoint);
@@ -42,6 +95,7 @@ void run_overlaps(const OverlapsOptions& o) {
               n.max_depth);
   std::printf("  volume claimed twice       %.3f %% of the cells' volume (grid %.3g lattice spacings)\n", 100.0 * volume,
               spacing);
+  print_fastest_node(s, u, mesh);
 }
 
 }  // namespace
