@@ -70,6 +70,20 @@ void print_fastest_node(const solver::CheckpointState& s, const solver::LatticeU
     }
   std::printf("  its cell's edges           %.2f to %.2f times their rest length (rest %.2f to %.2f spacings)\n",
               shortest, longest, shortest0, longest0);
+  // The most compressed edge of any cell, for comparison.
+  double least = 1e300;
+  std::size_t least_cell = 0;
+  for (std::size_t i = 0; i < s.positions.size(); ++i)
+    for (const auto& t : mesh.triangles)
+      for (int e = 0; e < 3; ++e) {
+        const int a = t[e], b = t[(e + 1) % 3];
+        const double ratio = (s.positions[i][a] - s.positions[i][b]).norm() / (mesh.vertices[a] - mesh.vertices[b]).norm();
+        if (ratio < least) {
+          least = ratio;
+          least_cell = i;
+        }
+      }
+  std::printf("  most compressed edge       %.2f times its rest length, cell %zu\n", least, least_cell);
 }
 
 void run_overlaps(const OverlapsOptions& o) {
