@@ -53,19 +53,15 @@ void EnsembleSampler::advance(int steps) {
       const Eigen::VectorXd proposal = positions_.col(j) + z * (positions_.col(k) - positions_.col(j));
       const double proposal_log_density = log_density_(proposal);
       const double log_accept = (d - 1.0) * std::log(z) + proposal_log_density - current_log_density_(k);
-      ++proposed_;
+      ++acceptance_.proposed;
       if (std::isfinite(proposal_log_density) && std::log(uniform(rng_)) < log_accept) {
         positions_.col(k) = proposal;
         current_log_density_(k) = proposal_log_density;
-        ++accepted_;
+        ++acceptance_.accepted;
       }
     }
     chain_.append(positions_, current_log_density_);
   }
-}
-
-double EnsembleSampler::acceptance_fraction() const {
-  return proposed_ > 0 ? static_cast<double>(accepted_) / static_cast<double>(proposed_) : 0.0;
 }
 
 }  // namespace rbcal::calibration

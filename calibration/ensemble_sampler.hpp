@@ -16,6 +16,13 @@ namespace rbcal::calibration {
 
 using LogDensity = std::function<double(const Eigen::VectorXd&)>;
 
+// Proposals made and accepted by a sampler, over all its steps.
+struct AcceptanceCount {
+  long long accepted = 0;
+  long long proposed = 0;
+  double fraction() const { return proposed > 0 ? static_cast<double>(accepted) / static_cast<double>(proposed) : 0.0; }
+};
+
 // The stored history of one ensemble: positions and log densities per step and walker.
 class EnsembleChain {
  public:
@@ -48,7 +55,7 @@ class EnsembleSampler {
                   double stretch_scale = 2.0);
   void advance(int steps);  // appends each step's ensemble to the chain
   const EnsembleChain& chain() const { return chain_; }
-  double acceptance_fraction() const;  // accepted / proposed, over all steps so far
+  double acceptance_fraction() const { return acceptance_.fraction(); }  // over all steps so far
 
  private:
   LogDensity log_density_;
@@ -57,8 +64,7 @@ class EnsembleSampler {
   std::mt19937_64 rng_;
   double stretch_scale_;
   EnsembleChain chain_;
-  long long accepted_ = 0;
-  long long proposed_ = 0;
+  AcceptanceCount acceptance_;
 };
 
 }  // namespace rbcal::calibration

@@ -58,20 +58,16 @@ void IndependenceSampler::advance(int steps) {
       const Eigen::VectorXd proposal = proposal_.draw(rng_);
       const double proposal_log_density = log_density_(proposal);
       const double proposal_log_weight = proposal_log_density - proposal_.log_density(proposal);
-      ++proposed_;
+      ++acceptance_.proposed;
       if (std::isfinite(proposal_log_density) && std::log(uniform(rng_)) < proposal_log_weight - log_weight_(k)) {
         positions_.col(k) = proposal;
         current_log_density_(k) = proposal_log_density;
         log_weight_(k) = proposal_log_weight;
-        ++accepted_;
+        ++acceptance_.accepted;
       }
     }
     chain_.append(positions_, current_log_density_);
   }
-}
-
-double IndependenceSampler::acceptance_fraction() const {
-  return proposed_ > 0 ? static_cast<double>(accepted_) / static_cast<double>(proposed_) : 0.0;
 }
 
 }  // namespace rbcal::calibration

@@ -40,7 +40,7 @@ class IndependenceSampler {
                       std::uint64_t seed);
   void advance(int steps);  // appends each step's walkers to the chain
   const EnsembleChain& chain() const { return chain_; }
-  double acceptance_fraction() const;
+  double acceptance_fraction() const { return acceptance_.fraction(); }
 
  private:
   LogDensity log_density_;
@@ -50,8 +50,7 @@ class IndependenceSampler {
   Eigen::VectorXd current_log_density_;
   std::mt19937_64 rng_;
   EnsembleChain chain_;
-  long long accepted_ = 0;
-  long long proposed_ = 0;
+  AcceptanceCount acceptance_;
 };
 
 }  // namespace rbcal::calibration

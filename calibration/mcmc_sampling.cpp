@@ -162,6 +162,14 @@ void advance_all(std::vector<Sampler>& samplers, int steps, int threads) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// The acceptance fraction averaged over the samplers.
+template <class Sampler>
+double mean_acceptance(const std::vector<Sampler>& samplers) {
+  double sum = 0.0;
+  for (const auto& s : samplers) sum += s.acceptance_fraction();
+  return sum / samplers.size();
+}
+
 // Runs the samplers, checking the first parameter's R-hat and ESS, until converged or
 // max_steps; fills result's steps, burn-in, convergence, chains and acceptance.
 template <class Sampler>
@@ -198,12 +206,8 @@ void run_until_converged(std::vector<Sampler>& samplers, const McmcOptions& opti
     }
   }
   result.chains.clear();
-  double acceptance = 0.0;
-  for (const auto& s : samplers) {
-    acceptance += s.acceptance_fraction();
-    result.chains.push_back(s.chain());
-  }
-  result.acceptance_fraction = acceptance / samplers.size();
+  for (const auto& s : samplers) result.chains.push_back(s.chain());
+  result.acceptance_fraction = mean_acceptance(samplers);
 }
 
 }  // namespace
@@ -235,13 +239,13 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
 #else
       1;
 #endif
-  auto or_default = [](double given, double fallback) { return given > 0.0 ? given : fallback; };
+  // Options left at 0 (steps) or below 0 (burn-in) take the sampler's default.
+  auto steps_or = [](int given, int fallback) { return given > 0 ? given : fallback; };
+  auto burn_in_or = [&](double fallback) { return options.burn_in_fraction >= 0.0 ? options.burn_in_fraction : fallback; };
   const auto run_ensembles = [&] {
     result.sampler = "ensemble (stretch move, a = " + formats::short_number(options.stretch_scale) + ")";
-    run_until_converged(ensembles, options, static_cast<int>(or_default(options.min_steps, 500)),
-                        static_cast<int>(or_default(options.check_interval, 250)),
-                        options.burn_in_fraction >= 0.0 ? options.burn_in_fraction : 0.5, options.max_steps,
-                        threads, result);
+    run_until_converged(ensembles, options, steps_or(options.min_steps, 500), steps_or(options.check_interval, 250),
+                        burn_in_or(0.5), options.max_steps, threads, result);
   };
   const int pilot = std::min(options.pilot_steps, options.max_steps / 2);
   if (!independence || pilot < 8) {
@@ -261,12 +265,11 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
     } catch (const std::invalid_argument& e) {
       unfit = std::string("no proposal could be fitted to the pilot (") + e.what() + ")";
     }
-    const int first_check = static_cast<int>(or_default(options.min_steps, 100));
+    const int first_check = steps_or(options.min_steps, 100);
     if (unfit.empty()) {
       // The first check's acceptance says whether the proposal fits; if not, the pilot goes on.
       advance_all(samplers, std::max(8, std::min(first_check, options.max_steps - pilot)), threads);
-      double acceptance = 0.0;
-      for (const auto& s : samplers) acceptance += s.acceptance_fraction() / samplers.size();
+      const double acceptance = mean_acceptance(samplers);
       if (acceptance < options.min_acceptance)
         unfit = "the independence proposal was accepted in only " + formats::short_number(acceptance, 2) +
                 " of its first draws";
@@ -276,8 +279,7 @@ McmcResult sample_posterior(const LogDensity& log_density, const std::vector<std
       result.sampler += "; " + unfit + ", so the pilot ensembles went on";
     } else {
       result.pilot_steps = pilot;
-      run_until_converged(samplers, options, first_check, static_cast<int>(or_default(options.check_interval, 50)),
-                          options.burn_in_fraction >= 0.0 ? options.burn_in_fraction : 0.1,
+      run_until_converged(samplers, options, first_check, steps_or(options.check_interval, 50), burn_in_or(0.1),
                           options.max_steps - pilot, threads, result);
       result.sampler = "independence Metropolis-Hastings (multivariate t, " + formats::short_number(options.proposal_dof) +
                        " dof, fitted to a " + std::to_string(pilot) + "-step stretch-move pilot)";

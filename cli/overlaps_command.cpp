@@ -3,11 +3,13 @@
 // written before result.json carried these figures, and for states mid-run. It also
 // names the fastest node, where it sits and how close another cell comes: for the states
 // a run keeps when its node Mach guard trips (checkpoint_failed.bin).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "solver/simulation/cell_overlap.hpp"
@@ -22,6 +24,22 @@ struct OverlapsOptions {
   std::string checkpoint;
   double spacing = 0.0;  // grid spacing in lattice units (0: solver::overlap_grid_spacing)
 };
+
+// Shortest and longest edge of one cell's mesh: lengths, or ratios to the rest shape's.
+struct EdgeRange {
+  double least = 1e300, most = 0.0;
+};
+EdgeRange edge_range(const std::vector<solver::Vec3>& x, const solver::TriangleMesh& mesh, bool relative) {
+  EdgeRange r;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const int i = t[e], j = t[(e + 1) % 3];
+      const double length = (x[i] - x[j]).norm() / (relative ? (mesh.vertices[i] - mesh.vertices[j]).norm() : 1.0);
+      r.least = std::min(r.least, length);
+      r.most = std::max(r.most, length);
+    }
+  return r;
+}
 
 // The node with the largest speed, its distance to the nearer wall, and the nearest node
 // of another cell (periodic in x and z), in lattice spacings.
@@ -57,32 +75,17 @@ void print_fastest_node(const solver::CheckpointState& s, const solver::LatticeU
               "another cell (%zu) %.2f spacings away\n",
               cell, node, fastest * std::sqrt(3.0), wall, other, nearest);
   // Its cell's edges against the rest shape: a crumpled mesh shows as edges far from it.
-  double shortest = 1e300, longest = 0.0, shortest0 = 1e300, longest0 = 0.0;
-  for (const auto& t : mesh.triangles)
-    for (int e = 0; e < 3; ++e) {
-      const int i = t[e], j = t[(e + 1) % 3];
-      const double now = (s.positions[cell][i] - s.positions[cell][j]).norm();
-      const double rest = (mesh.vertices[i] - mesh.vertices[j]).norm();
-      shortest = std::min(shortest, now / rest);
-      longest = std::max(longest, now / rest);
-      shortest0 = std::min(shortest0, rest);
-      longest0 = std::max(longest0, rest);
-    }
+  const EdgeRange its = edge_range(s.positions[cell], mesh, true), rest = edge_range(mesh.vertices, mesh, false);
   std::printf("  its cell's edges           %.2f to %.2f times their rest length (rest %.2f to %.2f spacings)\n",
-              shortest, longest, shortest0, longest0);
+              its.least, its.most, rest.least, rest.most);
   // The most compressed edge of any cell, for comparison.
   double least = 1e300;
   std::size_t least_cell = 0;
   for (std::size_t i = 0; i < s.positions.size(); ++i)
-    for (const auto& t : mesh.triangles)
-      for (int e = 0; e < 3; ++e) {
-        const int a = t[e], b = t[(e + 1) % 3];
-        const double ratio = (s.positions[i][a] - s.positions[i][b]).norm() / (mesh.vertices[a] - mesh.vertices[b]).norm();
-        if (ratio < least) {
-          least = ratio;
-          least_cell = i;
-        }
-      }
+    if (const double r = edge_range(s.positions[i], mesh, true).least; r < least) {
+      least = r;
+      least_cell = i;
+    }
   std::printf("  most compressed edge       %.2f times its rest length, cell %zu\n", least, least_cell);
 }
 

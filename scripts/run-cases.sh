@@ -10,6 +10,10 @@ set -uo pipefail
 out="$1"; shift
 rbcal="${RBCAL:-$(cd "$(dirname "$0")/.." && pwd)/build/bin/rbcal}"
 mkdir -p "$out"
+# Continues a run at coupling interval 1 from its last checkpoint.
+continue_at_interval_1() {
+  "$rbcal" simulate "$1" -o "$2" -q --resume --coupling-interval 1 || echo "$3: FAILED (status $?)"
+}
 for c in "$@"; do
   name="$(basename "$c" .json)"
   if [ -f "$out/$name.out/result.json" ]; then echo "$name: done before"; continue; fi
@@ -18,12 +22,12 @@ for c in "$@"; do
   # A run that went unstable at a coupling interval above 1 continues at 1 from its last
   # checkpoint (equivalent: docs/library.md); once switched, it stays at 1 on later resumes.
   if [ -f "$run/coupling_interval_changes.json" ]; then
-    "$rbcal" simulate "$c" -o "$run" -q --resume --coupling-interval 1 || echo "$name: FAILED (status $?)"
+    continue_at_interval_1 "$c" "$run" "$name"
   elif ! "$rbcal" simulate "$c" -o "$run" -q --resume; then
     if [ -f "$run/checkpoint_failed.bin" ] && [ -f "$run/checkpoint.bin" ] &&
        grep -Eq '"coupling_interval": *([2-9]|[1-9][0-9])' "$c"; then
       echo "$name: unstable at its coupling interval; continuing at 1 from the last checkpoint"
-      "$rbcal" simulate "$c" -o "$run" -q --resume --coupling-interval 1 || echo "$name: FAILED (status $?)"
+      continue_at_interval_1 "$c" "$run" "$name"
     else
       echo "$name: FAILED"
     fi
