@@ -25,11 +25,16 @@ DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_m
   if (!(bending_modulus >= 0.0)) throw std::invalid_argument("bending: modulus must be >= 0");
   cos0_.reserve(hinges_.size());
   sin0_.reserve(hinges_.size());
+  min_n1sq_.reserve(hinges_.size());
+  min_n2sq_.reserve(hinges_.size());
   for (const Hinge& h : hinges_) {
     const auto& v = reference.vertices;
     const double theta0 = shape == SpontaneousShape::Reference ? hinge_angle(v[h.a], v[h.b], v[h.c], v[h.d]) : 0.0;
     cos0_.push_back(std::cos(theta0));
     sin0_.push_back(std::sin(theta0));
+    const double n1 = (v[h.b] - v[h.a]).cross(v[h.c] - v[h.a]).norm(), n2 = (v[h.a] - v[h.b]).cross(v[h.d] - v[h.b]).norm();
+    min_n1sq_.push_back(kCollapsedArea * kCollapsedArea * n1 * n1);
+    min_n2sq_.push_back(kCollapsedArea * kCollapsedArea * n2 * n2);
   }
 }
 
@@ -53,6 +58,8 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
     }
     const double* cos0 = cos0_.data() + first;
     const double* sin0 = sin0_.data() + first;
+    const double* min_n1sq = min_n1sq_.data() + first;
+    const double* min_n2sq = min_n2sq_.data() + first;
 #pragma omp simd reduction(+ : energy)
     for (int i = 0; i < n; ++i) {
       const double ax = in[AX][i], ay = in[AY][i], az = in[AZ][i];
@@ -86,7 +93,10 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
       const double pd = (vx * ex + vy * ey + vz * ez) * inv_len2;
       const double qc = (ux * ex + uy * ey + uz * ez) * inv_len2;
       const double qd = ((dx - ax) * ex + (dy - ay) * ey + (dz - az) * ez) * inv_len2;
-      const double de = -kd * sin_delta;  // force = -dE/dtheta * gradient
+      // force = -dE/dtheta * gradient, scaled down for a collapsed wing (header): a common
+      // factor keeps the hinge's force and torque zero.
+      const double held = std::min({1.0, n1sq / min_n1sq[i], n2sq / min_n2sq[i]});
+      const double de = -kd * sin_delta * std::sqrt(held);
       out[AX][i] = de * (pc * gcx + pd * gdx);
       out[AY][i] = de * (pc * gcy + pd * gdy);
       out[AZ][i] = de * (pc * gcz + pd * gdz);

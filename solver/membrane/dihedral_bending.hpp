@@ -16,6 +16,13 @@
 // On icosahedral meshes, whose triangles are not all equilateral, the sphere's energy
 // with the Sphere factor is 1.032, 1.034 and 1.035 times 8 pi k_c at 320, 1280 and
 // 5120 triangles: it settles about 3.5 % high instead of converging to Helfrich's value.
+//
+// The angle's gradient grows as 1 / (area of a wing triangle): a triangle that collapses
+// (dense, high-Ca runs squeeze a few to under 1 % of their rest area) would get a force
+// that jumps a thousandfold in one step and blows the run up. Below kCollapsedArea of
+// its rest area a wing's gradient is therefore held at that area's value: the hinge's
+// forces are scaled by |n| / (kCollapsedArea |n_rest|), a common factor, so they stay
+// free of net force and torque. Healthy meshes are unaffected.
 #include <vector>
 
 #include "solver/membrane/triangle_mesh.hpp"
@@ -48,10 +55,15 @@ class DihedralBending {
   // surface is convex (as on a sphere with outward orientation).
   static double hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+  // Fraction of its rest area below which a wing triangle's gradient is held.
+  static constexpr double kCollapsedArea = 0.02;
+
  private:
   double k_d_;
   std::vector<Hinge> hinges_;
   std::vector<double> cos0_, sin0_;  // of each hinge's spontaneous angle
+  // Smallest |n|^2 (n: twice the area vector) used for the wings (a, b, c) and (b, a, d).
+  std::vector<double> min_n1sq_, min_n2sq_;
 };
 
 }  // namespace rbcal::solver
