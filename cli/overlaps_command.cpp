@@ -2,7 +2,8 @@
 // cells (nodes inside another cell, the deepest, the volume claimed twice). For runs
 // written before result.json carried these figures, and for states mid-run. It also
 // names the fastest node, where it sits and how close another cell comes: for the states
-// a run keeps when its node Mach guard trips (checkpoint_failed.bin).
+// a run keeps when its node Mach guard trips (checkpoint_failed.bin), and the mesh's
+// health: collapsed triangles and folded hinges (solver/membrane/mesh_health.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,8 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "solver/membrane/dihedral_bending.hpp"
+#include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/checkpoint.hpp"
 #include "solver/simulation/simulation_case.hpp"
@@ -112,6 +115,13 @@ void run_overlaps(const OverlapsOptions& o) {
               n.max_depth);
   std::printf("  volume claimed twice       %.3f %% of the cells' volume (grid %.3g lattice spacings)\n", 100.0 * volume,
               spacing);
+  const solver::MeshHealth q = solver::mesh_health(s.positions, mesh);
+  std::printf("  smallest triangle          %.4f of its rest area; %ld of %ld triangles (%.2f %%) below half, %ld below "
+              "%.2f\n",
+              q.smallest_area_ratio, q.triangles_below_half, q.triangles, 100.0 * q.triangles_below_half / q.triangles,
+              q.triangles_collapsed, solver::DihedralBending::kCollapsedArea);
+  std::printf("  folded hinges              %ld of %ld (normals over 120 degrees apart), in %ld of %zu cells\n",
+              q.folded_hinges, q.hinges, q.cells_with_folds, s.positions.size());
   print_fastest_node(s, u, mesh);
 }
 

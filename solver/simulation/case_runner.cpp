@@ -18,6 +18,7 @@
 #include "solver/io/format_duration.hpp"
 #include "solver/io/vtk_writer.hpp"
 #include "solver/simulation/block_average.hpp"
+#include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
@@ -282,6 +283,11 @@ class CaseRun {
     if (overlaps.nodes_inside > 0)
       j["result"]["overlap_volume_fraction"] = overlap_volume_fraction(
           sim_.positions(), sim_.triangles(), u.nx, u.ny, u.nz, overlap_grid_spacing(c_.resolution.nodes_per_radius));
+    // Mesh health at the end (solver/membrane/mesh_health.hpp).
+    const MeshHealth q = mesh_health(sim_.positions(), sim_.reference_mesh());
+    j["result"]["smallest_area_ratio"] = q.smallest_area_ratio;
+    j["result"]["triangles_below_half_area"] = q.triangles_below_half;
+    j["result"]["folded_hinges"] = q.folded_hinges;
     if (const nlohmann::json changes = interval_changes(); !changes.empty())
       j["result"]["coupling_interval_changes"] = changes;
     j["provenance"] = formats::provenance_block();

@@ -87,6 +87,7 @@ class ShearFlowSimulation {
   // Positions the inside fraction was last built from (empty for lambda = 1).
   const std::vector<std::vector<Vec3>>& indicator_positions() const { return x_indicator_; }
   const std::vector<Triangle>& triangles() const { return membrane_->reference().triangles; }
+  const TriangleMesh& reference_mesh() const { return membrane_->reference(); }
   Vec3 box_centre() const;
 
  private:
