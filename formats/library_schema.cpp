@@ -30,6 +30,7 @@ const std::vector<SignatureField>& numerics_signature_fields() {
       // absent (null) against absent only.
       {"cells.profile", json("evans-fung")},
       {"cells.skalak_c", json(nullptr)},
+      {"cells.skalak_c_per_Ca", json(0.0)},  // C growing with Ca (simulation_case.hpp)
       {"run.window", std::nullopt},
       {"params.kb_hat", json(nullptr)},
   };

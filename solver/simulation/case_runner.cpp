@@ -283,6 +283,7 @@ class CaseRun {
     if (overlaps.nodes_inside > 0)
       j["result"]["overlap_volume_fraction"] = overlap_volume_fraction(
           sim_.positions(), sim_.triangles(), u.nx, u.ny, u.nz, overlap_grid_spacing(c_.resolution.nodes_per_radius));
+    j["result"]["skalak_c"] = c_.effective_skalak_c();  // the C the membrane ran with
     // Mesh health at the end (solver/membrane/mesh_health.hpp).
     const MeshHealth q = mesh_health(sim_.positions(), sim_.reference_mesh());
     j["result"]["smallest_area_ratio"] = q.smallest_area_ratio;

@@ -36,7 +36,7 @@ ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c)
       inside_(units_.nx, units_.ny, units_.nz) {
   const double a = c.resolution.nodes_per_radius;  // the radius in lattice units
   CellMembraneSettings ms;
-  ms.material = {c.law, units_.shear_modulus, c.skalak_c};
+  ms.material = {c.law, units_.shear_modulus, c.effective_skalak_c()};
   ms.bending_modulus = units_.bending_modulus;
   ms.volume_stiffness = c.volume_stiffness * units_.shear_modulus / a;
   membrane_ = std::make_unique<CellMembrane>(reference_cell(c, a), ms);

@@ -1,5 +1,6 @@
 #include "solver/simulation/simulation_case.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "formats/field_reader.hpp"
@@ -29,6 +30,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   SimulationCase every_field;
   every_field.target_phi = 0.1;
   every_field.cells.push_back({});
+  every_field.skalak_c_per_ca = 1.0;
   const nlohmann::json known = case_to_json(every_field);
   for (const char* section : {"params", "cells", "numerics", "run"}) {
     std::vector<std::string> keys;
@@ -61,6 +63,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     r.fail("cells.triangles", e.what());
   }
   c.skalak_c = r.number_or("cells.skalak_c", c.skalak_c, 0.0, 1e6);
+  c.skalak_c_per_ca = r.number_or("cells.skalak_c_per_Ca", c.skalak_c_per_ca, 0.0, 1e6);
   if (const nlohmann::json* list = r.find("cells.placements")) {
     if (!list->is_array()) r.fail("cells.placements", "must be an array");
     for (std::size_t i = 0; i < list->size(); ++i) {
@@ -122,6 +125,7 @@ nlohmann::json case_to_json(const SimulationCase& c) {
                 {"triangles", c.triangles},
                 {"law", to_string(c.law)},
                 {"skalak_c", c.skalak_c}};
+  if (c.skalak_c_per_ca > 0.0) j["cells"]["skalak_c_per_Ca"] = c.skalak_c_per_ca;
   for (const CellPlacement& p : c.cells) j["cells"]["placements"].push_back({{"center", p.center}, {"rotation", p.rotation}});
   j["numerics"] = {{"N_a", c.resolution.nodes_per_radius},
                    {"tau_out", c.resolution.tau_out},
@@ -142,8 +146,14 @@ nlohmann::json case_to_json(const SimulationCase& c) {
   return j;
 }
 
+double SimulationCase::effective_skalak_c() const {
+  return std::max(skalak_c, skalak_c_per_ca * flow.capillary_number);
+}
+
 nlohmann::json state_defining_json(const SimulationCase& c) {
   nlohmann::json j = case_to_json(c);
+  j["cells"]["skalak_c"] = c.effective_skalak_c();
+  j["cells"].erase("skalak_c_per_Ca");
   const bool quiescent = c.quiescent;
   j.erase("run");
   j["quiescent"] = quiescent;

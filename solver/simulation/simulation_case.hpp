@@ -35,6 +35,13 @@ struct SimulationCase {
   int triangles = 1280;
   MembraneLaw law = MembraneLaw::Skalak;
   double skalak_c = 100.0;
+  // Optional growth of C with Ca: the membrane runs with C = max(skalak_c, skalak_c_per_ca
+  // * Ca) (effective_skalak_c). The area strain of a cell scales as Ca / (1 + 2C), so a C
+  // proportional to Ca bounds it equally at every Ca, while the explicit coupling's limit
+  // (on G_s (1 + 2C) in lattice units, G_s ~ 1 / Ca) stays the same (docs/library.md,
+  // "Area incompressibility at high Ca"). 0: C is skalak_c.
+  double skalak_c_per_ca = 0.0;
+  double effective_skalak_c() const;
   std::vector<CellPlacement> cells;
   // numerics
   LatticeResolution resolution;
@@ -62,7 +69,8 @@ struct SimulationCase {
 
 // The parts of a case that fix the physical state (params, cells, numerics, quiescent);
 // a checkpoint may be resumed under a case that differs only in the run length,
-// window or output intervals.
+// window or output intervals. The area constant appears as the C the membrane runs with
+// (effective_skalak_c), so a rule that gives the same C defines the same state.
 nlohmann::json state_defining_json(const SimulationCase& c);
 
 // Parses a case; errors name the file and the JSON field ("numerics.N_a").

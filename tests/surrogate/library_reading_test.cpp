@@ -102,6 +102,7 @@ TEST(LibraryReading, RejectsCasesWithOtherNumericsNamingBothFiles) {
       {"params.kb_hat", [](auto& j) { j["params"]["kb_hat"] = 0.0; }},
       {"cells.profile", [](auto& j) { j["cells"]["profile"] = "seed"; }},
       {"cells.skalak_c", [](auto& j) { j["cells"]["skalak_c"] = 10.0; }},
+      {"cells.skalak_c_per_Ca", [](auto& j) { j["cells"]["skalak_c_per_Ca"] = 125.0; }},
       // Equivalent on two dense cases (docs/performance.md), but not shown for every case.
       {"numerics.integrator", [](auto& j) { j["numerics"]["integrator"] = "euler"; }},
       {"numerics.indicator_tolerance", [](auto& j) { j["numerics"]["indicator_tolerance"] = 0.1; }},
