@@ -8,27 +8,16 @@
 #include "formats/format_error.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/simulation/simulation_case.hpp"
+#include "tests/simulation/small_sheared_case.hpp"
 
 using namespace rbcal::solver;
 
 namespace {
 
 SimulationCase small_case(double skalak_c, double per_ca) {
-  SimulationCase c;
-  c.shape = CellShape::Sphere;
-  c.triangles = 320;
-  c.law = MembraneLaw::Skalak;
+  SimulationCase c = test_cases::small_sheared_case(MembraneLaw::Skalak);
   c.skalak_c = skalak_c;
-  c.skalak_c_per_ca = per_ca;
-  c.flow.capillary_number = 0.1;
-  c.flow.viscosity_ratio = 3.0;
-  c.resolution.nodes_per_radius = 4;
-  c.resolution.box_in_radii = {4.0, 4.0, 4.0};
-  c.cells.push_back({});
-  c.strain_end = 0.2;
-  c.window = {0.05, 0.2};
-  c.record_interval = 0.01;
-  c.checkpoint_interval = 0.05;
+  c.skalak_c_per_ca = per_ca;  // Ca 0.1
   return c;
 }
 

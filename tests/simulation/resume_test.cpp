@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "solver/simulation/case_runner.hpp"
+#include "tests/simulation/small_sheared_case.hpp"
 
 using namespace rbcal::solver;
 
@@ -19,22 +20,7 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-SimulationCase small_case() {
-  SimulationCase c;
-  c.shape = CellShape::Sphere;
-  c.triangles = 320;
-  c.law = MembraneLaw::NeoHookean;
-  c.flow.capillary_number = 0.1;
-  c.flow.viscosity_ratio = 3.0;
-  c.resolution.nodes_per_radius = 4;
-  c.resolution.box_in_radii = {4.0, 4.0, 4.0};
-  c.cells.push_back({});
-  c.strain_end = 0.2;
-  c.window = {0.05, 0.2};
-  c.record_interval = 0.01;
-  c.checkpoint_interval = 0.05;
-  return c;
-}
+SimulationCase small_case() { return test_cases::small_sheared_case(MembraneLaw::NeoHookean); }
 
 }  // namespace
 
