@@ -152,8 +152,14 @@ class CaseRun {
     const int saved_interval = sim_.restore_checkpoint(checkpoint_path(), opt_.coupling_interval > 0);
     first_step_ = sim_.steps_done() + 1;
     const int interval = sim_.simulation_case().coupling_interval;
+    // Changes recorded at or after this checkpoint belong to a stretch that is now run
+    // again (a run that failed after a switch resumes from the same checkpoint).
+    nlohmann::json changes = nlohmann::json::array();
+    for (const auto& change : interval_changes())
+      if (change.value("at_strain", 0.0) < sim_.strain() - 1e-9) changes.push_back(change);
+    const bool dropped = changes.size() != interval_changes().size();
+    if (dropped) formats::write_json_atomically(interval_changes_path(), changes);
     if (saved_interval != interval) {
-      nlohmann::json changes = interval_changes();
       changes.push_back({{"at_strain", sim_.strain()}, {"from", saved_interval}, {"to", interval}});
       formats::write_json_atomically(interval_changes_path(), changes);
       if (opt_.progress)

@@ -93,8 +93,17 @@ TEST(Resume, ContinuesUnderAnotherCouplingIntervalOnlyWhenAsked) {
   EXPECT_THROW(run_case(other, part), std::runtime_error);  // not without asking
 
   part.coupling_interval = 1;
+  // A run that fails after the switch resumes from the same checkpoint again (as
+  // scripts/run-cases.sh does): the switch is one change, not one per attempt.
+  const fs::path saved = root / "switched" / "checkpoint.bin", copy = root / "checkpoint_at_switch.bin";
+  fs::copy_file(saved, copy);
+  part.max_steps = 5;
+  ASSERT_EQ(run_case(c, part)["status"], "interrupted");
+  fs::copy_file(copy, saved, fs::copy_options::overwrite_existing);
+  part.max_steps = 0;
   const nlohmann::json b = run_case(c, part);
   ASSERT_TRUE(b["result"].contains("coupling_interval_changes")) << b.dump();
+  EXPECT_EQ(b["result"]["coupling_interval_changes"].size(), 1u) << b["result"].dump();
   const nlohmann::json& change = b["result"]["coupling_interval_changes"][0];
   EXPECT_EQ(change["from"], 2);
   EXPECT_EQ(change["to"], 1);
