@@ -95,7 +95,8 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
       const double qd = ((dx - ax) * ex + (dy - ay) * ey + (dz - az) * ez) * inv_len2;
       // force = -dE/dtheta * gradient, scaled down for a collapsed wing (header): a common
       // factor keeps the hinge's force and torque zero.
-      const double held = std::min({1.0, n1sq / min_n1sq[i], n2sq / min_n2sq[i]});
+      const double r1 = n1sq / min_n1sq[i], r2 = n2sq / min_n2sq[i];
+      const double held = r1 < r2 ? (r1 < 1.0 ? r1 : 1.0) : (r2 < 1.0 ? r2 : 1.0);
       const double de = -kd * sin_delta * std::sqrt(held);
       out[AX][i] = de * (pc * gcx + pd * gdx);
       out[AY][i] = de * (pc * gcy + pd * gdy);
