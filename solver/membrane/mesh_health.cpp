@@ -8,10 +8,6 @@ namespace rbcal::solver {
 
 namespace {
 
-Vec3 twice_area_vector(const std::vector<Vec3>& x, const Triangle& t) {
-  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
-}
-
 void add_cell(const std::vector<Vec3>& x, const TriangleMesh& rest, const std::vector<Hinge>& hinges, MeshHealth& q) {
   for (const Triangle& t : rest.triangles) {
     const double ratio = twice_area_vector(x, t).norm() / twice_area_vector(rest.vertices, t).norm();

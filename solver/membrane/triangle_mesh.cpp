@@ -29,7 +29,7 @@ double winding_number(const Vec3& p, const std::vector<Vec3>& x, const std::vect
 
 double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles) {
   double twice_a = 0.0;
-  for (const Triangle& t : triangles) twice_a += (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+  for (const Triangle& t : triangles) twice_a += twice_area_vector(x, t).norm();
   return 0.5 * twice_a;
 }
 

@@ -26,6 +26,10 @@ struct Hinge {
 // Enclosed volume (divergence theorem), positive for outward orientation.
 double enclosed_volume(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
 double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles);
+// (x1 - x0) x (x2 - x0) of triangle t: its outward normal times twice its area.
+inline Vec3 twice_area_vector(const std::vector<Vec3>& x, const Triangle& t) {
+  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+}
 Vec3 vertex_centroid(const std::vector<Vec3>& x);
 // Winding number of the closed surface about p: 1 inside, 0 outside (up to round-off),
 // from the solid angles of the triangles (Van Oosterom and Strackee, IEEE Trans. Biomed.
