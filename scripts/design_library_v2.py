@@ -5,15 +5,12 @@ the box plus a maximin Latin hypercube of 52 points, 60 in all, each at N_a 6; a
 maximin subset of 20 of them (corners included) also at N_a 8, for the resolution
 extrapolation. Deterministic: rerunning writes the same files.
 
-Numerics (docs/library.md, "Library v2"): Evans-Fung cells of 1280 elements, Skalak
-C = max(10, 125 Ca) (cells.skalak_c_per_Ca; docs/library.md, "Area incompressibility at
-high Ca"), kb_hat 0.0078, box 6a x 8a x 6a, tau_out 1, Euler, indicator tolerance 0.1, coupling
+Numerics (docs/library.md, "Library v2"): Evans-Fung cells of 1280 elements, Skalak C 10,
+kb_hat 0.0078, box 6a x 8a x 6a, tau_out 1, Euler, indicator tolerance 0.1, coupling
 interval 2 (shown equivalent to 1 on two dense cases), gamma_dot t to 40 with the window
-[15, 40]. Re 0.2, lowered where the area modulus K_s = G_s (1 + 2C) in lattice units
-times the coupling interval would exceed 21 x 0.05 min(1, (1 + lambda) / 2) (the
-stability cap of the v1 library, docs/library.md "Time-step limit", set on G_s at C 10).
-With C = 125 Ca above Ca 0.08, K_s stays below a quarter of the cap at Re 0.2, so the cap
-binds only where C is 10, as in the plans' cap on G_s.
+[15, 40]. Re 0.2, lowered where G_s in lattice units times the coupling interval would
+exceed 0.05 min(1, (1 + lambda) / 2) (the stability cap of the v1 library,
+docs/library.md "Time-step limit").
 
 Usage: python3 scripts/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
 writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json and OUT_DIR/n8/ID.json, and the same design
@@ -33,7 +30,6 @@ LOG_CA = (math.log10(0.01), math.log10(3.2))
 LOG_LAMBDA = (-1.0, 1.0)
 LHS_POINTS, SUBSET, RESTARTS, SEED = 52, 20, 3000, 20261123
 COUPLING_INTERVAL, CAP, RE = 2, 0.05, 0.2
-SKALAK_C, SKALAK_C_PER_CA = 10.0, 125.0
 
 
 def sig3(x):
@@ -84,15 +80,13 @@ def greedy_subset(points, k, start):
 
 def case_file(phi, ca, lam, n_a):
     nu = (1.0 - 0.5) / 3.0
-    area_c = max(SKALAK_C, SKALAK_C_PER_CA * ca)
-    modulus = RE * nu * nu / (n_a * ca) * (1.0 + 2.0 * area_c)  # K_s in lattice units at Re 0.2
-    cap = CAP * (1.0 + 2.0 * SKALAK_C) * min(1.0, 0.5 * (1.0 + lam)) / COUPLING_INTERVAL
+    modulus = RE * nu * nu / (n_a * ca)  # G_s in lattice units at Re 0.2
+    cap = CAP * min(1.0, 0.5 * (1.0 + lam)) / COUPLING_INTERVAL
     re = RE if modulus <= cap else float(f"{RE * cap / modulus:.4g}")
     return {
         "schema": "rbcal.case/1",
         "params": {"phi": phi, "Ca": ca, "lambda": lam, "kb_hat": 0.0078},
-        "cells": {"shape": "biconcave", "profile": "evans-fung", "triangles": 1280, "law": "skalak", "skalak_c": SKALAK_C,
-                  "skalak_c_per_Ca": SKALAK_C_PER_CA},
+        "cells": {"shape": "biconcave", "profile": "evans-fung", "triangles": 1280, "law": "skalak", "skalak_c": 10.0},
         "numerics": {"N_a": n_a, "tau_out": 1.0, "box": [6.0, 8.0, 6.0], "Re": re, "kernel": "peskin4",
                      "integrator": "euler", "indicator_tolerance": 0.1, "coupling_interval": COUPLING_INTERVAL,
                      "seed": 1},
