@@ -2,8 +2,9 @@
 # The v2 library from its background runs, in one go (issue 16; docs/library.md):
 #   1. gather the finished runs into data/library/v2/n6 and n8 (scripts/collect-library.sh);
 #   2. extrapolate to the continuum into data/library/v2/converged (rbcal library extrapolate,
-#      order 2.8 and P_LOW (--order-low) 2 by default: docs/library.md, orders measured at
-#      phi 0.21 and 0.55);
+#      order 2.8 and P_LOW (--order-low) 1.5 by default: docs/library.md, orders measured at
+#      phi 0.05, 0.21 and 0.55, and the (6, 8) estimates against the finer runs,
+#      scripts/extrapolation_check.py);
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 # It does not touch data/library/default/: swapping the default is a separate, reviewed step.
@@ -24,7 +25,7 @@ if [ "$n8" -lt 3 ]; then
   exit 0
 fi
 # The seed-scatter floor of dense runs (docs/library.md, the phi 0.41 twins over [15, 40]).
-"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order "${ORDER:-2.8}" --order-low "${P_LOW:-2}" \
+"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
   --scatter-floor "${SCATTER_FLOOR:-0.054}"
 "$rbcal" surrogate build "$lib/converged"
 "$rbcal" surrogate check "$lib/converged/surrogate.json" || echo "trend check FAILED (see above)"
