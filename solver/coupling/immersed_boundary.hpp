@@ -36,15 +36,19 @@ struct NodeOrder {
   static constexpr int slab_width = 4;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
   std::vector<Vec3> position, force;                           // of nodes[g]
+  // Kernel stencils at position[g]: built once per membrane update, read by the spreading
+  // and again by the interpolation that follows the fluid step (the nodes have not moved).
+  std::vector<KernelStencil> stencil;
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
 };
-// Fills order for these nodes (forces: the same shape as positions).
+// Fills order, stencils included, for these nodes (forces: the same shape as positions).
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);
 
 // Adds each node's force (lattice units, force per node) to the lattice force field.
-void spread_forces(KernelKind kernel, const NodeOrder& order, FluidLattice& fluid);
+// (order: from order_nodes, whose stencils carry the kernel.)
+void spread_forces(const NodeOrder& order, FluidLattice& fluid);
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);
 // The same for one set of nodes.

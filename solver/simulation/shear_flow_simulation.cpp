@@ -128,7 +128,7 @@ void ShearFlowSimulation::move_cells(double dt) {
   for (long g = 0; g < total; ++g) {
     const auto [cell, m] = order_.nodes[g];
     const Vec3& x = order_.position[g];
-    const Vec3 u1 = velocity_at(x);
+    const Vec3 u1 = interpolate_field(order_.stencil[g], u, ny, nz);
     if (case_.integrator == Integrator::Euler) {
       v_[cell][m] = u1;
     } else {
@@ -170,7 +170,7 @@ void ShearFlowSimulation::step() {
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     lap(timings_.ordering);
     fluid_.clear_force();
-    spread_forces(case_.kernel, order_, fluid_);
+    spread_forces(order_, fluid_);
     lap(timings_.spreading);
     update_viscosity();
     lap(timings_.indicator);
@@ -228,7 +228,7 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
   if (fluid_.steps_done() % case_.coupling_interval != 0 || saved_interval != case_.coupling_interval) {
     order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
     fluid_.clear_force();
-    spread_forces(case_.kernel, order_, fluid_);
+    spread_forces(order_, fluid_);
   }
   if (contrast) {
     x_indicator_ = std::move(s.indicator_positions);
