@@ -129,16 +129,18 @@ void ShearFlowSimulation::move_cells(double dt) {
     const auto [cell, m] = order_.nodes[g];
     const Vec3& x = order_.position[g];
     const Vec3 u1 = interpolate_field(order_.stencil[g], u, ny, nz);
-    if (case_.integrator == Integrator::Euler) {
-      v_[cell][m] = u1;
-    } else {
+    Vec3 velocity = u1;
+    if (case_.integrator != Integrator::Euler) {
       // Classical RK4 through the velocity field of this step (over dt).
       const Vec3 u2 = velocity_at(x + (0.5 * dt) * u1);
       const Vec3 u3 = velocity_at(x + (0.5 * dt) * u2);
       const Vec3 u4 = velocity_at(x + dt * u3);
-      v_[cell][m] = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
+      velocity = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
     }
-    fastest = std::max(fastest, v_[cell][m].squaredNorm());
+    // The speed from the register, not read back from v_ (written in mesh order, a
+    // scattered store that the read-back had to wait for).
+    fastest = std::max(fastest, velocity.squaredNorm());
+    v_[cell][m] = velocity;
   }
   // The explicit coupling's instability shows first as runaway node speeds. Caught here,
   // every membrane step, it stops the run before exploding meshes reach the inside
@@ -148,7 +150,10 @@ void ShearFlowSimulation::move_cells(double dt) {
   if (!(mach < kMaxNodeMach)) throw std::runtime_error(node_mach_exceeded(mach));
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    for (std::size_t m = 0; m < x_[i].size(); ++m) x_[i][m] += dt * v_[i][m];
+    Vec3* const x = x_[i].data();  // raw pointers: the vectors' data are not reloaded per node
+    const Vec3* const v = v_[i].data();
+    const std::size_t n = x_[i].size();
+    for (std::size_t m = 0; m < n; ++m) x[m] += dt * v[m];
     correct_volume(x_[i], membrane_->reference().triangles, membrane_->reference_volume());
   }
 }
