@@ -6,6 +6,9 @@
 # rebuilding the tree meanwhile does not change the solver half-way through a queue.
 # A run that the node Mach guard stops at a coupling interval above 1 is continued at
 # interval 1 from its last checkpoint (rbcal simulate --coupling-interval 1).
+# Several queues may share OUT (say one per core over the same cases in opposite orders):
+# each case runs under a lock (flock on OUT/<stem>.lock, released by the kernel when its
+# holder ends, even if killed), and a queue skips a case that another one is running.
 set -uo pipefail
 out="$1"; shift
 rbcal="${RBCAL:-$(cd "$(dirname "$0")/.." && pwd)/build/bin/rbcal}"
@@ -14,11 +17,10 @@ mkdir -p "$out"
 continue_at_interval_1() {
   "$rbcal" simulate "$1" -o "$2" -q --resume --coupling-interval 1 || echo "$3: FAILED (status $?)"
 }
-for c in "$@"; do
-  name="$(basename "$c" .json)"
-  if [ -f "$out/$name.out/result.json" ]; then echo "$name: done before"; continue; fi
+# Runs one case (the body of the loop; called with the lock held).
+run_case() {
+  local c="$1" name="$2" run="$3"
   echo "$name: start $(date -u +%FT%TZ)"
-  run="$out/$name.out"
   # A run that went unstable at a coupling interval above 1 continues at 1 from its last
   # checkpoint (equivalent: docs/library.md); once switched, it stays at 1 on later resumes.
   if [ -f "$run/coupling_interval_changes.json" ]; then
@@ -33,4 +35,15 @@ for c in "$@"; do
     fi
   fi
   echo "$name: end $(date -u +%FT%TZ)"
+}
+for c in "$@"; do
+  name="$(basename "$c" .json)"
+  run="$out/$name.out"
+  if [ -f "$run/result.json" ]; then echo "$name: done before"; continue; fi
+  (
+    flock -n 9 || { echo "$name: running in another queue, skipped"; exit 0; }
+    # Finished by another queue while this one waited for its turn?
+    if [ -f "$run/result.json" ]; then echo "$name: done before"; exit 0; fi
+    run_case "$c" "$name" "$run"
+  ) 9>"$out/$name.lock"
 done
