@@ -35,7 +35,9 @@ def lattice_moduli(case, reynolds):
     a = n["N_a"]
     nu = (n.get("tau_out", 1.0) - 0.5) / 3.0
     g = reynolds * nu * nu / (a * case["params"]["Ca"])
-    c = case["cells"].get("skalak_c", 10.0)
+    cells = case["cells"]
+    # The C the membrane runs with (SimulationCase::effective_skalak_c: the area rule).
+    c = max(cells.get("skalak_c", 100.0), cells.get("skalak_c_per_Ca", 0.0) * case["params"]["Ca"])  # solver default 100
     return g, g * (1.0 + 2.0 * c)
 
 

@@ -12,8 +12,7 @@ double DihedralBending::hinge_constant(double bending_modulus, BendingConversion
 }
 
 double DihedralBending::hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Vec3 n1 = (b - a).cross(c - a);  // triangle (a, b, c)
-  const Vec3 n2 = (a - b).cross(d - b);  // triangle (b, a, d)
+  const auto [n1, n2] = wing_normals(a, b, c, d);
   const Vec3 e = b - a;
   // sin(theta) |n1||n2| = (n1 x n2) . e/|e|, cos(theta) |n1||n2| = n1 . n2
   return std::atan2(n1.cross(n2).dot(e) / e.norm(), n1.dot(n2));
@@ -32,7 +31,8 @@ DihedralBending::DihedralBending(const TriangleMesh& reference, double bending_m
     const double theta0 = shape == SpontaneousShape::Reference ? hinge_angle(v[h.a], v[h.b], v[h.c], v[h.d]) : 0.0;
     cos0_.push_back(std::cos(theta0));
     sin0_.push_back(std::sin(theta0));
-    const double n1 = (v[h.b] - v[h.a]).cross(v[h.c] - v[h.a]).norm(), n2 = (v[h.a] - v[h.b]).cross(v[h.d] - v[h.b]).norm();
+    const auto [w1, w2] = wing_normals(v, h);
+    const double n1 = w1.norm(), n2 = w2.norm();
     min_n1sq_.push_back(kCollapsedArea * kCollapsedArea * n1 * n1);
     min_n2sq_.push_back(kCollapsedArea * kCollapsedArea * n2 * n2);
   }

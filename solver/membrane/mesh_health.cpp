@@ -19,7 +19,7 @@ void add_cell(const std::vector<Vec3>& x, const TriangleMesh& rest, const std::v
   // Hinge (a, b, c) / (b, a, d): cos of the angle between the normals below -1/2.
   long folds = 0;
   for (const Hinge& h : hinges) {
-    const Vec3 n1 = (x[h.b] - x[h.a]).cross(x[h.c] - x[h.a]), n2 = (x[h.a] - x[h.b]).cross(x[h.d] - x[h.b]);
+    const auto [n1, n2] = wing_normals(x, h);
     folds += n1.dot(n2) < -0.5 * n1.norm() * n2.norm();
     ++q.hinges;
   }

@@ -30,6 +30,13 @@ double surface_area(const std::vector<Vec3>& x, const std::vector<Triangle>& tri
 inline Vec3 twice_area_vector(const std::vector<Vec3>& x, const Triangle& t) {
   return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
 }
+// The wings of hinge a-b: normals times twice the areas of triangles (a, b, c) and (b, a, d).
+inline std::array<Vec3, 2> wing_normals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return {(b - a).cross(c - a), (a - b).cross(d - b)};
+}
+inline std::array<Vec3, 2> wing_normals(const std::vector<Vec3>& x, const Hinge& h) {
+  return wing_normals(x[h.a], x[h.b], x[h.c], x[h.d]);
+}
 Vec3 vertex_centroid(const std::vector<Vec3>& x);
 // Winding number of the closed surface about p: 1 inside, 0 outside (up to round-off),
 // from the solid angles of the triangles (Van Oosterom and Strackee, IEEE Trans. Biomed.

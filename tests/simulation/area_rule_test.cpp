@@ -8,6 +8,7 @@
 #include "formats/format_error.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/simulation/simulation_case.hpp"
+#include "tests/simulation/interrupted_run.hpp"
 #include "tests/simulation/small_sheared_case.hpp"
 
 using namespace rbcal::solver;
@@ -51,16 +52,8 @@ TEST(AreaRule, CheckpointResumesUnderARuleGivingTheSameC) {
   const fs::path root = fs::temp_directory_path() / "rbcal_area_rule_test";
   fs::remove_all(root);
   const SimulationCase explicit_c = small_case(12.5, 0.0), rule = small_case(10.0, 125.0);
-  RunOptions straight;
-  straight.output_dir = (root / "straight").string();
-  const nlohmann::json a = run_case(explicit_c, straight);
-
-  RunOptions part;
-  part.output_dir = (root / "interrupted").string();
-  part.max_steps = 20;
-  ASSERT_EQ(run_case(explicit_c, part)["status"], "interrupted");
-  part.max_steps = 0;
-  part.resume = true;
+  const nlohmann::json a = test_cases::straight_run(explicit_c, root / "straight");
+  const RunOptions part = test_cases::interrupted_run(explicit_c, root / "interrupted", 20);
   // Another C (the rule at another floor) is another state.
   EXPECT_THROW(run_case(small_case(10.0, 150.0), part), std::runtime_error);
   const nlohmann::json b = run_case(rule, part);

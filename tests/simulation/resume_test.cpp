@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "solver/simulation/case_runner.hpp"
+#include "tests/simulation/interrupted_run.hpp"
 #include "tests/simulation/small_sheared_case.hpp"
 
 using namespace rbcal::solver;
@@ -30,18 +31,9 @@ void expect_resume_equals_straight(const SimulationCase& c, const std::string& n
   // Outside the source tree, whatever directory the test is started from.
   const fs::path root = fs::temp_directory_path() / ("rbcal_resume_test_" + name);
   fs::remove_all(root);
-  RunOptions straight;
-  straight.output_dir = (root / "straight").string();
-  const nlohmann::json a = run_case(c, straight);
-
-  RunOptions part;
-  part.output_dir = (root / "interrupted").string();
-  part.max_steps = max_steps;
-  const nlohmann::json stopped = run_case(c, part);
-  ASSERT_EQ(stopped["status"], "interrupted");
-  part.max_steps = 0;
-  part.resume = true;
-  const nlohmann::json b = run_case(c, part);
+  const nlohmann::json a = test_cases::straight_run(c, root / "straight");
+  const RunOptions resume = test_cases::interrupted_run(c, root / "interrupted", max_steps);
+  const nlohmann::json b = run_case(c, resume);
 
   EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
   EXPECT_EQ(a["result"]["eta_re_wall"].get<double>(), b["result"]["eta_re_wall"].get<double>());
@@ -77,17 +69,10 @@ TEST(Resume, ContinuesUnderAnotherCouplingIntervalOnlyWhenAsked) {
   fs::remove_all(root);
   SimulationCase c = small_case();
   c.coupling_interval = 2;
-  RunOptions straight;
-  straight.output_dir = (root / "straight").string();
-  const nlohmann::json a = run_case(c, straight);
+  const nlohmann::json a = test_cases::straight_run(c, root / "straight");
   EXPECT_FALSE(a["result"].contains("coupling_interval_changes"));
 
-  RunOptions part;
-  part.output_dir = (root / "switched").string();
-  part.max_steps = 37;
-  ASSERT_EQ(run_case(c, part)["status"], "interrupted");
-  part.max_steps = 0;
-  part.resume = true;
+  RunOptions part = test_cases::interrupted_run(c, root / "switched", 37);
   SimulationCase other = c;
   other.coupling_interval = 1;
   EXPECT_THROW(run_case(other, part), std::runtime_error);  // not without asking
