@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Library cases on a lent many-core machine (the workplace's device tool), where no
+# packages can be installed: docs/performance.md, "Library cases on the lent 16-core machine".
+#   here:   bash scripts/device-batch.sh prepare BINARY
+#           copies BINARY, its shared libraries and the loader into .devrun/ (ignore it in
+#           .git/info/exclude and name it in the tool's carry list);
+#   there:  THREADS=2 bash scripts/device-batch.sh run LIMIT TIER CASE_NAME...
+#           runs data/cases/library_v2/TIER/CASE_NAME.json in parallel, THREADS threads each,
+#           stopped (with a checkpoint) after LIMIT seconds; packs the finished results, all
+#           series and the logs into $OUT/results.tar.gz and up to four unfinished
+#           checkpoints into $OUT (what the tool brings back: 8 files of 16 MiB at most).
+# Back here, finished cases go to RUNS/TIER/NAME.out/ (result.json, series.csv), unfinished
+# ones with their checkpoint.bin and series.csv, where scripts/run-cases.sh resumes them.
+set -u
+mode=$1; shift
+if [ "$mode" = prepare ]; then
+  rm -rf .devrun && mkdir .devrun && cp "$1" .devrun/rbcal
+  for lib in $(ldd .devrun/rbcal | awk '/=>/ {print $3} /ld-linux/ {print $1}'); do cp -L "$lib" .devrun/; done
+  du -sh .devrun
+  exit 0
+fi
+[ "$mode" = run ] || { echo "usage: $0 prepare BINARY | run LIMIT TIER CASE_NAME..."; exit 2; }
+limit=$1 tier=$2; shift 2
+here=$(pwd)
+lscpu | grep -E "Model name|^CPU\(s\)|L3"
+mkdir -p /tmp/runs
+start=$(date +%s)
+cd data/cases/library_v2
+for n in "$@"; do
+  OMP_NUM_THREADS=${THREADS:-1} timeout -s TERM "$limit" "$here/.devrun/ld-linux-x86-64.so.2" --library-path "$here/.devrun" \
+    "$here/.devrun/rbcal" simulate "$tier/$n.json" -o "/tmp/runs/$n.out" > "/tmp/runs/$n.log" 2>&1 &
+done
+wait
+echo "all stopped after $(( $(date +%s) - start )) s"
+cd /tmp/runs
+finished=() left=()
+for n in "$@"; do
+  if [ -f "$n.out/result.json" ]; then finished+=("$n"); else left+=("$n"); fi
+  echo "$n: strain $(tail -n1 "$n.out/series.csv" 2>/dev/null | cut -d, -f1) $(grep -o 'eta_re (stresslet).*' "$n.log" | head -1)"
+done
+echo "finished: ${finished[*]}"; echo "unfinished: ${left[*]}"
+files=()
+for n in "${finished[@]}"; do files+=("$n.out/result.json" "$n.out/series.csv"); done
+for n in "${left[@]}"; do [ -f "$n.out/series.csv" ] && files+=("$n.out/series.csv"); done
+tar czf "$OUT/results.tar.gz" "${files[@]}" "${@/%/.log}"
+kept=0
+for n in "${left[@]}"; do
+  [ "$kept" -ge 4 ] && break
+  [ -f "$n.out/checkpoint.bin" ] && cp "$n.out/checkpoint.bin" "$OUT/$n.checkpoint.bin" && kept=$((kept + 1))
+done
+ls -la "$OUT"
