@@ -24,8 +24,9 @@ if [ "$n8" -lt 3 ]; then
   echo "fewer than 3 cases at N_a 8: no extrapolation yet"
   exit 0
 fi
-# The seed-scatter floor of dense runs (docs/library.md, the phi 0.41 twins over [15, 40]).
+# The seed-scatter floor (docs/library.md): 5.4 % from the phi 0.41 twins over [15, 40],
+# ramped from phi 0.05, so that phi 0.21 gets 2.4 % (its three N_a 6 seeds scatter 3.0 %).
 "$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
-  --scatter-floor "${SCATTER_FLOOR:-0.054}"
+  --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
 "$rbcal" surrogate build "$lib/converged"
 "$rbcal" surrogate check "$lib/converged/surrogate.json" || echo "trend check FAILED (see above)"
