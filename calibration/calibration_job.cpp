@@ -109,6 +109,7 @@ class SampleCalibration {
       if (!r.direct->converged) r.warnings.push_back("direct fit: Ceres did not converge");
       if (!r.direct->covariance_ok) r.warnings.push_back("direct fit: covariance rank deficient, no interval");
       if (r.direct->at_bound) r.warnings.push_back("direct fit: an estimate sits on a bound, interval unreliable");
+      if (r.direct->model_edge != ModelEdge::none) r.warnings.push_back("direct fit: " + r.direct->model_edge_reason);
     } catch (const std::exception& e) {
       r.warnings.push_back(std::string("direct fit failed: ") + e.what());
     }
@@ -122,6 +123,11 @@ class SampleCalibration {
     try {
       r.mcmc = calibrate_mcmc(r.sample, model_, mo);
       if (!r.mcmc->mcmc.converged) r.warnings.push_back("MCMC not converged: " + r.mcmc->mcmc.stop_reason);
+      if (r.mcmc->start_fit.model_edge != ModelEdge::none)
+        r.warnings.push_back(std::string("MCMC: posterior truncated at the model's Ca range (the start fit is an edge fit): "
+                                         "its G_s interval is an ") +
+                             (r.mcmc->start_fit.model_edge == ModelEdge::largest_ca ? "upper" : "lower") +
+                             " limit, not an estimate");
       PredictiveBandOptions bo;
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "calibration/viscosity_observation.hpp"
 
@@ -92,6 +93,23 @@ double scan_start(const std::vector<WeightedResidual>& residuals, const Viscosit
   return lo + (hi - lo) * best / (n - 1);
 }
 
+// The ln G_s interval over which every used point keeps its Ca inside the model's range
+// [ca_min, ca_max] at the given eta0 (Ca = eta0 gamma_dot a / G_s falls as G_s grows); empty
+// (first > second) when the used shear rates span more than ca_max / ca_min.
+std::pair<double, double> ln_shear_modulus_keeping_ca_inside(const ViscosityObservation& obs,
+                                                             const std::vector<RelativeViscosityPoint>& points,
+                                                             const std::vector<bool>& used,
+                                                             const surrogate::ParameterRange& range) {
+  double rate_min = std::numeric_limits<double>::infinity(), rate_max = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (used[i]) {
+      rate_min = std::min(rate_min, points[i].shear_rate);
+      rate_max = std::max(rate_max, points[i].shear_rate);
+    }
+  const double k = obs.plasma_viscosity * obs.cell_radius;
+  return {std::log(k * rate_max / range.ca_max), std::log(k * rate_min / range.ca_min)};
+}
+
 ceres::LossFunction* make_loss(const DirectFitOptions& options) {
   switch (options.loss) {
     case RobustLoss::huber: return new ceres::HuberLoss(options.loss_scale);
@@ -151,13 +169,43 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   const double ln_gs_lo = std::log(options.shear_modulus_min), ln_gs_hi = std::log(options.shear_modulus_max);
 
   std::vector<bool> used = select_inside(obs, sample.points, x);
+  // A fit that carries every point out of the model's Ca range means that the data lie beyond
+  // the model (below it, in practice) at any G_s inside it. The fit is then repeated on every
+  // point whose phi the model covers (else on the first round's set), with G_s held where all
+  // of them stay inside the Ca range: the constrained optimum, which sits on that edge (an edge
+  // fit).
+  std::vector<bool> first_set;
+  bool edge_fit = false;
+  double lo = ln_gs_lo, hi = ln_gs_hi;           // the bounds of the last solve
+  std::pair<double, double> edge{ln_gs_lo, ln_gs_hi};
   for (int round = 0; round < std::max(1, options.max_selection_rounds); ++round) {
     const int n_used = static_cast<int>(std::count(used.begin(), used.end(), true));
     if (n_used < fitted_to_data) {
-      std::ostringstream what;
-      what << "sample '" << sample.name << "': " << n_used << " point(s) inside the model's range, need at least "
-           << fitted_to_data;
-      throw std::invalid_argument(what.str());
+      if (first_set.empty()) {
+        std::ostringstream what;
+        what << "sample '" << sample.name << "': " << n_used << " point(s) inside the model's range, need at least "
+             << fitted_to_data;
+        throw std::invalid_argument(what.str());
+      }
+      edge_fit = true;
+      for (std::size_t i = 0; i < sample.points.size(); ++i)
+        used[i] = sample.points[i].phi >= range.phi_min && sample.points[i].phi <= range.phi_max;
+      ViscosityObservation at = obs;
+      at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
+      const auto all = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
+      if (!(all.first <= all.second) || std::count(used.begin(), used.end(), true) < fitted_to_data) used = first_set;
+    }
+    lo = ln_gs_lo;
+    hi = ln_gs_hi;
+    if (edge_fit) {
+      ViscosityObservation at = obs;
+      at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
+      edge = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
+      if (edge.first <= edge.second) {
+        lo = std::max(lo, edge.first);
+        hi = std::min(hi, edge.second);
+      }
+      x.ln_shear_modulus = std::clamp(x.ln_shear_modulus, lo, hi);
     }
     ceres::Problem problem;
     for (std::size_t i = 0; i < sample.points.size(); ++i) {
@@ -168,8 +216,8 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
                                &x.ln_plasma_viscosity);
     }
     std::vector<double*> free_blocks = {&x.ln_shear_modulus};
-    problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, ln_gs_lo);
-    problem.SetParameterUpperBound(&x.ln_shear_modulus, 0, ln_gs_hi);
+    problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, lo);
+    problem.SetParameterUpperBound(&x.ln_shear_modulus, 0, hi);
     if (options.setup.fit_lambda) {
       problem.SetParameterLowerBound(&x.ln_lambda, 0, ln_lambda_lo);
       problem.SetParameterUpperBound(&x.ln_lambda, 0, ln_lambda_hi);
@@ -198,9 +246,9 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     ceres::Solve(solver_options, &problem, &summary);
 
     const std::vector<bool> now_inside = select_inside(obs, sample.points, x);
-    const bool last_round = round + 1 == std::max(1, options.max_selection_rounds);
+    const bool last_round = edge_fit || round + 1 == std::max(1, options.max_selection_rounds);
     if (now_inside == used || last_round) {
-      if (now_inside != used)
+      if (now_inside != used && !edge_fit)
         result.messages.push_back("the set of points inside the model's range still changed after the last refit");
       result.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
       result.solver_report = summary.BriefReport();
@@ -211,6 +259,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       }
       break;
     }
+    if (first_set.empty()) first_set = used;
     used = now_inside;
   }
 
@@ -222,8 +271,24 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   result.lambda = std::exp(x.ln_lambda);
   result.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
   const double bound_tolerance = 1e-6;
+  if (edge_fit) {
+    const bool low_edge = x.ln_shear_modulus - edge.first < bound_tolerance;
+    const bool high_edge = edge.second - x.ln_shear_modulus < bound_tolerance;
+    if (low_edge || high_edge) {
+      result.model_edge = low_edge ? ModelEdge::largest_ca : ModelEdge::smallest_ca;
+      std::ostringstream what;
+      what << "no G_s fits the data inside the model's Ca range " << range.ca_min << " to " << range.ca_max
+           << ": the best fit carries every point out of it, so G_s is held where the "
+           << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range.ca_max : range.ca_min)
+           << "; read G_s = " << std::exp(x.ln_shear_modulus) * 1e6 << " uN/m as an "
+           << (low_edge ? "upper" : "lower") << " limit, not an estimate (the data lie "
+           << (low_edge ? "below" : "above") << " the model)";
+      result.model_edge_reason = what.str();
+      result.messages.push_back(result.model_edge_reason);
+    }
+  }
   result.at_bound =
-      x.ln_shear_modulus - ln_gs_lo < bound_tolerance || ln_gs_hi - x.ln_shear_modulus < bound_tolerance ||
+      x.ln_shear_modulus - lo < bound_tolerance || hi - x.ln_shear_modulus < bound_tolerance ||
       (options.setup.fit_lambda &&
        (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance));
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");

@@ -44,6 +44,9 @@ struct FittedPoint {
   double weighted_residual = 0.0;  // (eta_re - predicted) / sqrt(eta_re_sd^2 + predicted_sd^2)
 };
 
+// Where an edge fit (a fit that would leave the model's Ca range with every point) holds G_s.
+enum class ModelEdge { none, largest_ca, smallest_ca };
+
 struct DirectFitResult {
   std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0"
   Eigen::VectorXd estimate;                  // in that order
@@ -55,6 +58,10 @@ struct DirectFitResult {
   double lambda = 0.0;                       // fitted or fixed
   Interval lambda_interval;                  // when fitted
   bool at_bound = false;                     // an estimate sits on a bound: interval unreliable
+  // Not none: G_s is held at the model's Ca edge (largest_ca: an upper limit on G_s, the data
+  // lie below the model; smallest_ca: a lower limit); messages say so.
+  ModelEdge model_edge = ModelEdge::none;
+  std::string model_edge_reason;  // the message that says so, empty when none
   bool converged = false;
   double chi_square = 0.0;  // sum of squared weighted residuals over used points
   int degrees_of_freedom = 0;
@@ -65,7 +72,8 @@ struct DirectFitResult {
   std::string solver_report;  // Ceres' brief report of the last solve
 };
 
-// Throws std::invalid_argument when fewer points than parameters lie in the model's range.
+// Throws std::invalid_argument when fewer points than parameters lie in the model's range at the
+// start. A fit that then carries every point out of the range becomes an edge fit (model_edge).
 DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
                            const DirectFitOptions& options = {});
 

@@ -30,7 +30,12 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   for (const auto& f : out.start_fit.points)
     if (f.used) out.points.push_back(f.point);
 
-  const LogPosterior posterior(model, sample.plasma.eta0, out.points, options.posterior,
+  // After an edge fit the likelihood's optimum lies outside the model's Ca range, where the
+  // surrogate only extrapolates: the posterior is then truncated to the range, and its interval
+  // is a limit like the fit's (start_fit.model_edge_reason).
+  PosteriorOptions posterior_options = options.posterior;
+  if (out.start_fit.model_edge != ModelEdge::none) posterior_options.reject_outside_model_range = true;
+  const LogPosterior posterior(model, sample.plasma.eta0, out.points, posterior_options,
                                sample.plasma.standard_error);
   out.posterior = posterior.options();
   const int d = posterior.dimension();

@@ -80,6 +80,9 @@ json direct_json(const DirectFitResult& d) {
             {"converged", d.converged},
             {"covariance_ok", d.covariance_ok},
             {"at_bound", d.at_bound},
+            {"model_edge", d.model_edge == ModelEdge::none          ? "none"
+                           : d.model_edge == ModelEdge::largest_ca ? "largest_ca (G_s is an upper limit)"
+                                                                   : "smallest_ca (G_s is a lower limit)"},
             {"parameters", d.parameter_names},
             {"messages", d.messages}};
   const bool lambda_fitted =

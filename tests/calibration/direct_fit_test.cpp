@@ -8,6 +8,7 @@
 
 #include "analytic_viscosity_model.hpp"
 #include "calibration/direct_fit.hpp"
+#include "calibration/mcmc_calibration.hpp"
 #include "synthetic_sample.hpp"
 
 using namespace rbcal::calibration;
@@ -227,4 +228,49 @@ TEST(DirectFit, IntervalWidensWithTheAssumedPlasmaViscositysUncertainty) {
     last_width = width;
   }
   EXPECT_GT(last_width, 1.05 * first_width);
+}
+
+// Data that lie below the model over its whole Ca range (here 0.7 times the model at the true
+// G_s): the unconstrained fit would carry every point beyond ca_max. The fit must not fail but
+// hold G_s where the highest shear rate reaches ca_max, use every point and call the result an
+// upper limit; the MCMC started from it must stay inside the range (issue 17, item 3).
+TEST(DirectFit, DataBelowTheModelGiveAnEdgeFitAndAnUpperLimit) {
+  AnalyticViscosityModel model;
+  model.box.ca_max = 2.0;
+  test_models::SyntheticDesign design;
+  design.shear_rates = {10.0, 22.0, 46.0, 100.0};  // Ca 0.13 to 1.3 at the true G_s
+  design.relative_measurement_sd = 0.02;
+  design.add_model_noise = false;
+  std::mt19937_64 rng(5);
+  SampleData sample = test_models::synthetic_sample(model, design, rng);
+  for (auto& p : sample.points) p.eta_re *= 0.7;
+  const DirectFitResult fit = fit_direct(sample, model);
+  const double edge = design.plasma_viscosity * 100.0 * kDefaultCellRadius / model.box.ca_max;
+  EXPECT_EQ(fit.model_edge, ModelEdge::largest_ca);
+  EXPECT_NEAR(fit.shear_modulus / edge, 1.0, 1e-6);
+  EXPECT_TRUE(fit.at_bound);
+  for (const auto& p : fit.points) EXPECT_TRUE(p.used) << "phi " << p.point.phi << " rate " << p.point.shear_rate;
+  EXPECT_NE(fit.model_edge_reason.find("upper limit"), std::string::npos) << fit.model_edge_reason;
+
+  McmcCalibrationOptions options;
+  options.sampler.chains = 2;
+  options.sampler.walkers = 8;
+  options.sampler.max_steps = 300;
+  const McmcCalibration mcmc = calibrate_mcmc(sample, model, options);
+  EXPECT_TRUE(mcmc.posterior.reject_outside_model_range);
+  for (double g : mcmc.shear_modulus_draws()) ASSERT_GE(g, edge * (1.0 - 1e-9));
+}
+
+TEST(DirectFit, DataInsideTheModelGiveNoEdgeFit) {
+  AnalyticViscosityModel model;
+  model.box.ca_max = 2.0;
+  test_models::SyntheticDesign design;
+  design.shear_rates = {10.0, 22.0, 46.0, 100.0};
+  design.add_model_noise = false;
+  std::mt19937_64 rng(5);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);
+  const DirectFitResult fit = fit_direct(sample, model);
+  EXPECT_EQ(fit.model_edge, ModelEdge::none);
+  EXPECT_TRUE(fit.model_edge_reason.empty());
+  EXPECT_NEAR(std::log(fit.shear_modulus / design.shear_modulus), 0.0, 4.0 * fit.ln_shear_modulus_sd);
 }
