@@ -25,6 +25,13 @@ std::string interval_text(const Interval& i, double scale) {
          format("%.4g", scale * i.upper) + "]";
 }
 
+// Marks a result held at the model's Ca edge (direct_fit.hpp, ModelEdge) on its headline.
+std::string edge_note(ModelEdge edge) {
+  if (edge == ModelEdge::largest_ca) return " -- UPPER LIMIT at the model's largest Ca, not an estimate";
+  if (edge == ModelEdge::smallest_ca) return " -- LOWER LIMIT at the model's smallest Ca, not an estimate";
+  return "";
+}
+
 }  // namespace
 
 std::string SampleReport::brief_report() const {
@@ -48,16 +55,17 @@ std::string SampleReport::brief_report() const {
   if (direct) {
     const auto& d = *direct;
     const auto used = std::count_if(d.points.begin(), d.points.end(), [](const auto& f) { return f.used; });
-    out += format("  G_s direct  %.4g uN/m  %s (Laplace, %ld points, chi^2/dof %.3g)\n", kMicro * d.shear_modulus,
+    out += format("  G_s direct  %.4g uN/m  %s (Laplace, %ld points, chi^2/dof %.3g)%s\n", kMicro * d.shear_modulus,
                   interval_text(d.shear_modulus_interval, kMicro).c_str(), static_cast<long>(used),
-                  d.degrees_of_freedom > 0 ? d.chi_square / d.degrees_of_freedom : 0.0);
+                  d.degrees_of_freedom > 0 ? d.chi_square / d.degrees_of_freedom : 0.0,
+                  edge_note(d.model_edge).c_str());
     if (std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end())
       out += format("  lambda direct %.4g  %s\n", d.lambda, interval_text(d.lambda_interval, 1.0).c_str());
   }
   if (mcmc) {
     const auto& m = *mcmc;
-    out += format("  G_s mcmc    %.4g uN/m  %s (posterior median)\n", kMicro * m.shear_modulus_median,
-                  interval_text(m.shear_modulus_interval, kMicro).c_str());
+    out += format("  G_s mcmc    %.4g uN/m  %s (posterior median)%s\n", kMicro * m.shear_modulus_median,
+                  interval_text(m.shear_modulus_interval, kMicro).c_str(), edge_note(m.start_fit.model_edge).c_str());
     if (m.posterior.setup.fit_lambda)
       out += format("  lambda mcmc %.4g  %s\n", m.lambda_median, interval_text(m.lambda_interval, 1.0).c_str());
     const auto& mc = m.mcmc;

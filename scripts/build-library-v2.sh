@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # The v2 library from its background runs, in one go (issue 16; docs/library.md):
 #   1. gather the finished runs into data/library/v2/n6 and n8 (scripts/collect-library.sh);
-#   2. extrapolate to the continuum into data/library/v2/converged (rbcal library extrapolate,
+#   2. extrapolate to the continuum into data/library/default, the shipped default library
+#      (rbcal library extrapolate,
 #      order 2.8 and P_LOW (--order-low) 1.5 by default: docs/library.md, orders measured at
 #      phi 0.05, 0.21 and 0.55, and the (6, 8) estimates against the finer runs,
 #      scripts/extrapolation_check.py);
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
-# It does not touch data/library/default/: swapping the default is a separate, reviewed step.
+# It rewrites data/library/default/cases and surrogate.json (the default since 2026-11-24);
+# review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-/work/runs/library_v2}"
@@ -26,7 +28,14 @@ if [ "$n8" -lt 3 ]; then
 fi
 # The seed-scatter floor (docs/library.md): 5.4 % from the phi 0.41 twins over [15, 40],
 # ramped from phi 0.05, so that phi 0.21 gets 2.4 % (its three N_a 6 seeds scatter 3.0 %).
-"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$lib/converged" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
+out=data/library/default
+rm -rf "$out/cases"
+mkdir -p "$out"
+# Everything below is also written to $out/build_report.txt (extrapolation table, leave-one-out
+# report, trend check), the record that docs/library.md quotes.
+exec > >(tee "$out/build_report.txt") 2>&1
+echo "rbcal $(git rev-parse --short HEAD)$(git diff --quiet || echo -dirty), $(date -u +%F)"
+"$rbcal" library extrapolate "$lib/n6" "$lib/n8" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
   --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
-"$rbcal" surrogate build "$lib/converged"
-"$rbcal" surrogate check "$lib/converged/surrogate.json" || echo "trend check FAILED (see above)"
+"$rbcal" surrogate build "$out"
+"$rbcal" surrogate check "$out/surrogate.json" || echo "trend check FAILED (see above)"
