@@ -3,11 +3,13 @@
 ensemble) and emcee (Debian python3-emcee) on the same posterior, the log posterior of
 rbcal.calibrate called through the Python module.
 
-Posterior: a sample of tests/calibration/data/synthetic_rheometer.csv on the surrogate of
-tests/surrogate/data/tiny_library (the shipped sample cannot be calibrated on the current
-default library: no point within reach, docs/calibration.md). Two parameters (ln G_s,
-ln eta0: the plasma viscosity as nuisance parameter) as shipped, one (ln G_s) with eta0
-fixed (the sample's plasma rows rewritten with sd 0).
+Posterior: by default the "intact" sample of tests/calibration/data/synthetic_rheometer.csv
+on the surrogate of tests/surrogate/data/tiny_library; with --shipped, the shipped sample
+(data/samples/kim2017_whole_blood.csv) on the shipped default surrogate with the CLI's
+default point selection (its posterior is truncated at the model's largest Ca: an edge fit,
+docs/calibration.md). Two parameters (ln G_s, ln eta0: the plasma viscosity as nuisance
+parameter) as shipped, one (ln G_s) with eta0 fixed (the sample's plasma rows rewritten
+with sd 0; not with --shipped, whose points are out of the model's reach once eta0 is fixed).
 
 Both samplers: one thread, the same number of walkers in all (64: rbcal 4 ensembles x 16,
 emcee one ensemble of 64), at most the same number of steps (rbcal stops earlier once
@@ -16,7 +18,7 @@ burn-in: the first half for the ensemble, the pilot and 10 % after it for the in
 sampler). ESS of
 ln G_s by one and the same estimator for both (rbcal.chain_diagnostics: bulk ESS, walkers
 as chains). Usage (from the repository root, after the build):
-    PYTHONPATH=build/python /usr/bin/python3 bench/python/emcee_comparison.py [--steps N] [--rounds R]
+    PYTHONPATH=build/python /usr/bin/python3 bench/python/emcee_comparison.py [--steps N] [--rounds R] [--shipped]
 """
 import argparse
 import os
@@ -31,17 +33,23 @@ import numpy as np
 import rbcal
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-DATA = ROOT / "tests/calibration/data/synthetic_rheometer.csv"
+SYNTHETIC = {"data": ROOT / "tests/calibration/data/synthetic_rheometer.csv", "sample": "intact",
+             "min_shear_rate": 0.0}
+SHIPPED = {"data": ROOT / "data/samples/kim2017_whole_blood.csv", "sample": "kim2017_whole_blood",
+           "min_shear_rate": 40.0, "surrogate": ROOT / "data/library/default/surrogate.json"}
+POSTERIOR = dict(SYNTHETIC)
 
 
 def fixed_eta0_copy(folder):
     """The same CSV with every plasma row's sd set to 0: eta0 becomes a constant."""
-    out = folder / "synthetic_fixed_eta0.csv"
+    out = folder / "fixed_eta0.csv"
     lines = []
-    for line in DATA.read_text().splitlines():
+    for line in POSTERIOR["data"].read_text().splitlines():
         fields = line.split(",")
         if len(fields) == 7 and fields[1] == "plasma":
             fields[5] = "0"
+        elif len(fields) == 7 and fields[1] == "plasma_assumed":  # as one measured plateau row, sd 0
+            fields[1], fields[3], fields[5] = "plasma", "100", "0"
         lines.append(",".join(fields))
     out.write_text("\n".join(lines) + "\n")
     return out
@@ -58,13 +66,14 @@ def quantiles(x):
 
 def run_rbcal(data, surrogate, steps, seed, sampler, walkers, ensembles):
     t0 = time.perf_counter()
-    cal = rbcal.calibrate(str(data), surrogate, method="mcmc", samples=["intact"], mcmc_max_steps=steps,
-                          chains=ensembles, walkers=walkers, threads=1, min_shear_rate=0.0, seed=seed,
-                          sampler=sampler)
+    name = POSTERIOR["sample"]
+    cal = rbcal.calibrate(str(data), surrogate, method="mcmc", samples=[name], mcmc_max_steps=steps,
+                          chains=ensembles, walkers=walkers, threads=1, min_shear_rate=POSTERIOR["min_shear_rate"],
+                          seed=seed, sampler=sampler)
     seconds = time.perf_counter() - t0
     diagnostics = cal.samples[0]["methods"]["mcmc"]["diagnostics"]
     assert diagnostics["sampler"].startswith(sampler), diagnostics["sampler"]
-    return cal, seconds, cal.chains("intact"), diagnostics["pilot_steps"] + diagnostics["steps"]
+    return cal, seconds, cal.chains(name), diagnostics["pilot_steps"] + diagnostics["steps"]
 
 
 def run(data, surrogate, steps, seed):
@@ -77,8 +86,8 @@ def run(data, surrogate, steps, seed):
         out[f"{who}_ess"] = rbcal.chain_diagnostics(walker_chains(pooled[:, :, 0], walkers))["bulk_ess"]
         out[f"{who}_q"] = quantiles(pooled[:, :, 0].ravel())
     out["sd"] = np.std(pooled[:, :, 0].ravel())
-    names = cal.parameter_names("intact")
-    lp = cal.log_posterior("intact")
+    names = cal.parameter_names(POSTERIOR["sample"])
+    lp = cal.log_posterior(POSTERIOR["sample"])
 
     # emcee: 64 walkers started where rbcal's ensembles ended their burn-in's first draw.
     start = np.concatenate([c.reshape(-1, walkers, len(names))[0] for c in pooled], axis=0)
@@ -98,14 +107,26 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--steps", type=int, default=2000, help="steps per walker (both samplers)")
     parser.add_argument("--rounds", type=int, default=3, help="repetitions (medians are reported)")
+    parser.add_argument("--shipped", action="store_true",
+                        help="the shipped sample on the shipped default surrogate instead of the synthetic one")
     args = parser.parse_args()
+    if args.shipped:
+        POSTERIOR.update(SHIPPED)
     exe = os.environ.get("RBCAL_EXE", str(ROOT / "build/bin/rbcal"))
     with tempfile.TemporaryDirectory() as tmp:
         folder = pathlib.Path(tmp)
-        surrogate = str(folder / "tiny_surrogate.json")
-        subprocess.run([exe, "surrogate", "build", str(ROOT / "tests/surrogate/data/tiny_library"), "-o", surrogate],
-                       check=True, capture_output=True)
-        cases = [("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)), ("ln G_s, ln eta0", DATA)]
+        if "surrogate" in POSTERIOR:
+            surrogate = str(POSTERIOR["surrogate"])
+        else:
+            surrogate = str(folder / "tiny_surrogate.json")
+            subprocess.run([exe, "surrogate", "build", str(ROOT / "tests/surrogate/data/tiny_library"), "-o",
+                            surrogate], check=True, capture_output=True)
+        cases = [("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)), ("ln G_s, ln eta0", POSTERIOR["data"])]
+        if args.shipped:
+            # With eta0 fixed at 1.45 mPa s no point of the shipped sample is within the model's
+            # reach (their errors no longer carry eta0's): only the two-parameter posterior exists.
+            cases = cases[1:]
+        print(f"posterior: sample {POSTERIOR['sample']} of {POSTERIOR['data'].relative_to(ROOT)} on {surrogate}")
         print(f"at most {args.steps} steps x 64 walkers, {args.rounds} rounds (medians), 1 thread; steps: "
               "per walker, pilot included")
         print("| posterior | sampler | steps | seconds | bulk ESS of ln G_s | ESS / s | q2.5, q50, q97.5 of ln G_s |")
