@@ -67,8 +67,14 @@ LibrarySummary summarise(const SimulationLibrary& library) {
   s.grid = {unique_sorted(grid.phi), unique_sorted(grid.capillary_number), unique_sorted(grid.viscosity_ratio)};
   // Grid points phi-major, lambda fastest (the order the tables read); a listed design's in its order.
   std::vector<PlanPoint> points;
+  const std::size_t spanned = s.grid.phi.size() * s.grid.capillary_number.size() * s.grid.viscosity_ratio.size();
   if (s.listed_design) {
     points = library.plan->listed;
+  } else if (!s.grid_from_plan && spanned > 2 * library.cases.size()) {
+    // No plan, and the cases' values do not fill a grid (a space-filling design, or a library
+    // extrapolated from one): list the cases themselves instead of a mostly empty grid.
+    s.listed_design = true;
+    for (const LibraryCase& c : library.cases) points.push_back({c.phi, c.capillary_number, c.viscosity_ratio});
   } else {
     for (double phi : s.grid.phi)
       for (double ca : s.grid.capillary_number)

@@ -26,7 +26,8 @@ struct LibrarySummary {
   double median_eta_re_sem = 0.0;           // absolute
   double median_relative_eta_re_sem = 0.0;  // eta_re_sem / eta_re
   bool grid_from_plan = false;              // false: grid spanned by the cases' own values
-  bool listed_design = false;               // the plan lists its points: grid_points are those
+  bool listed_design = false;               // the plan lists its points, or (without a plan) the cases do
+                                            // not fill a grid: grid_points are those points
   ParameterGrid grid;
   std::vector<GridPoint> grid_points;       // phi slowest, lambda fastest
   std::size_t missing_count = 0;

@@ -182,6 +182,23 @@ TEST(LibrarySummary, MarksPresentAndMissingPointsOfAListedDesign) {
   EXPECT_NE(text.find("phi 0.5    Ca 2       lambda 10      . missing"), std::string::npos) << text;
 }
 
+// Without a plan, cases that do not fill a grid (a space-filling design) are listed one per
+// line, not shown as a mostly empty grid of their unique values (3 x 3 x 3 here).
+TEST(LibrarySummary, ListsScatteredCasesWithoutAPlan) {
+  const auto root = fresh_temp_folder("summary_scattered");
+  write_text(root / "cases" / "a.json", case_json(0.1, 0.1, 5.0, 0.1, 1.3, 0.01).dump());
+  write_text(root / "cases" / "b.json", case_json(0.3, 0.02, 1.0, 0.3, 2.5, 0.01).dump());
+  write_text(root / "cases" / "c.json", case_json(0.5, 2.0, 10.0, 0.5, 3.5, 0.01).dump());
+  const LibrarySummary s = summarise(read_library(root));
+  EXPECT_FALSE(s.grid_from_plan);
+  EXPECT_TRUE(s.listed_design);
+  ASSERT_EQ(s.grid_points.size(), 3u);
+  EXPECT_EQ(s.missing_count, 0u);
+  const std::string text = format_summary(s, true);
+  EXPECT_NE(text.find("listed design of 3 points, 3 present, 0 missing"), std::string::npos) << text;
+  EXPECT_NE(text.find("phi 0.3    Ca 0.02    lambda 1       eta_re 2.5"), std::string::npos) << text;
+}
+
 TEST(LibrarySummary, RejectsPlanWithBadGrid) {
   const auto root = fresh_temp_folder("bad_plan");
   write_text(root / "plan.json", R"({"schema": "rbcal.plan/1", "grid": {"phi": [0.1, 1.5], "Ca": [0.1], "lambda": [5]}})");
