@@ -126,8 +126,7 @@ class SampleCalibration {
       if (r.mcmc->start_fit.model_edge != ModelEdge::none)
         r.warnings.push_back(std::string("MCMC: posterior truncated at the model's Ca range (the start fit is an edge fit): "
                                          "its G_s interval is an ") +
-                             (r.mcmc->start_fit.model_edge == ModelEdge::largest_ca ? "upper" : "lower") +
-                             " limit, not an estimate");
+                             limit_kind(r.mcmc->start_fit.model_edge) + " limit, not an estimate");
       PredictiveBandOptions bo;
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;

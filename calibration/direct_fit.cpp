@@ -190,10 +190,6 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       edge_fit = true;
       for (std::size_t i = 0; i < sample.points.size(); ++i)
         used[i] = sample.points[i].phi >= range.phi_min && sample.points[i].phi <= range.phi_max;
-      ViscosityObservation at = obs;
-      at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
-      const auto all = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
-      if (!(all.first <= all.second) || std::count(used.begin(), used.end(), true) < fitted_to_data) used = first_set;
     }
     lo = ln_gs_lo;
     hi = ln_gs_hi;
@@ -201,6 +197,10 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       ViscosityObservation at = obs;
       at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
       edge = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
+      if (!(edge.first <= edge.second) || std::count(used.begin(), used.end(), true) < fitted_to_data) {
+        used = first_set;
+        edge = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
+      }
       if (edge.first <= edge.second) {
         lo = std::max(lo, edge.first);
         hi = std::min(hi, edge.second);
@@ -281,7 +281,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
            << ": the best fit carries every point out of it, so G_s is held where the "
            << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range.ca_max : range.ca_min)
            << "; read G_s = " << std::exp(x.ln_shear_modulus) * 1e6 << " uN/m as an "
-           << (low_edge ? "upper" : "lower") << " limit, not an estimate (the data lie "
+           << limit_kind(result.model_edge) << " limit, not an estimate (the data lie "
            << (low_edge ? "below" : "above") << " the model)";
       result.model_edge_reason = what.str();
       result.messages.push_back(result.model_edge_reason);

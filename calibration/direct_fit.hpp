@@ -46,6 +46,10 @@ struct FittedPoint {
 
 // Where an edge fit (a fit that would leave the model's Ca range with every point) holds G_s.
 enum class ModelEdge { none, largest_ca, smallest_ca };
+// What G_s is at that edge: an "upper" (largest_ca) or "lower" (smallest_ca) limit; "" for none.
+inline const char* limit_kind(ModelEdge edge) {
+  return edge == ModelEdge::largest_ca ? "upper" : edge == ModelEdge::smallest_ca ? "lower" : "";
+}
 
 struct DirectFitResult {
   std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0"

@@ -31,7 +31,6 @@ if [ -n "${N8_LEAVE_OUT:-}" ]; then
   trap 'rm -rf "$fine"' EXIT
   cp -r "$lib/n8/." "$fine/"
   for id in $N8_LEAVE_OUT; do rm -f "$fine/cases/$id.json" "$fine/cases/$id.csv"; done
-  echo "N_a 8 cases left out of the extrapolation: $N8_LEAVE_OUT"
 fi
 n8=$(count "$fine/cases")
 echo "v2: $n6 case(s) at N_a 6, $n8 at N_a 8"

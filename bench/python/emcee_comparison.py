@@ -121,11 +121,11 @@ def main():
             surrogate = str(folder / "tiny_surrogate.json")
             subprocess.run([exe, "surrogate", "build", str(ROOT / "tests/surrogate/data/tiny_library"), "-o",
                             surrogate], check=True, capture_output=True)
-        cases = [("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)), ("ln G_s, ln eta0", POSTERIOR["data"])]
-        if args.shipped:
-            # With eta0 fixed at 1.45 mPa s no point of the shipped sample is within the model's
-            # reach (their errors no longer carry eta0's): only the two-parameter posterior exists.
-            cases = cases[1:]
+        cases = [("ln G_s, ln eta0", POSTERIOR["data"])]
+        # With eta0 fixed at 1.45 mPa s no point of the shipped sample is within the model's
+        # reach (their errors no longer carry eta0's): there only the two-parameter posterior exists.
+        if not args.shipped:
+            cases.insert(0, ("ln G_s (eta0 fixed)", fixed_eta0_copy(folder)))
         print(f"posterior: sample {POSTERIOR['sample']} of {POSTERIOR['data'].relative_to(ROOT)} on {surrogate}")
         print(f"at most {args.steps} steps x 64 walkers, {args.rounds} rounds (medians), 1 thread; steps: "
               "per walker, pilot included")
