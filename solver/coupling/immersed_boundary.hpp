@@ -41,6 +41,7 @@ struct NodeOrder {
   std::vector<KernelStencil> stencil;
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
+  std::vector<std::size_t> cell_first;                         // scratch: first global node of each cell
 };
 // Fills order, stencils included, for these nodes (forces: the same shape as positions).
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,

@@ -117,8 +117,8 @@ void ShearFlowSimulation::rebuild_viscosity() {
 void ShearFlowSimulation::move_cells(double dt) {
   const KernelKind k = case_.kernel;
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
-  const std::size_t nodes = fluid_.node_count();
-  const double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
+  const std::size_t stride = FluidLattice::component_stride(fluid_.node_count());
+  const double* const u[3] = {u_field_.data(), u_field_.data() + stride, u_field_.data() + 2 * stride};
   auto velocity_at = [&](const Vec3& p) { return interpolate_field(make_stencil(k, p, nx, ny, nz), u, ny, nz); };
   // All nodes of all cells in one parallel loop, in the order of their stencils' rows
   // (order_nodes, built from these positions when the forces were spread).
@@ -182,9 +182,9 @@ void ShearFlowSimulation::step() {
   }
   // The step before a membrane update also writes the velocity field it interpolates.
   const bool update_follows = (fluid_.steps_done() + 1) % interval == 0;
-  const std::size_t nodes = fluid_.node_count();
-  if (update_follows && u_field_.size() != 3 * nodes) u_field_.assign(3 * nodes, 0.0);
-  double* const u[3] = {u_field_.data(), u_field_.data() + nodes, u_field_.data() + 2 * nodes};
+  const std::size_t stride = FluidLattice::component_stride(fluid_.node_count());
+  if (update_follows && u_field_.size() != 3 * stride) u_field_.assign(3 * stride, 0.0);
+  double* const u[3] = {u_field_.data(), u_field_.data() + stride, u_field_.data() + 2 * stride};
   fluid_.step(update_follows ? u : nullptr);
   lap(timings_.fluid);
   if (fluid_.steps_done() % interval == 0) {
