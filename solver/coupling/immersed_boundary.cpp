@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
 namespace rbcal::solver {
@@ -137,6 +138,8 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   // count.
   // The modulo only where a support starts outside the box (an integer division per
   // coordinate was a fifth of this function's time).
+  if (nx > INT16_MAX || ny > INT16_MAX || nz > INT16_MAX)  // KernelStencil's indices
+    throw std::invalid_argument("immersed boundary: lattice wider than 32767 nodes");
   auto in_box = [](int i, int n) { return i >= 0 && i < n ? i : wrap(i, n); };
   auto key_of = [&](const Vec3& p) {
     const int x = in_box(support_start(kernel, p.x()), nx);

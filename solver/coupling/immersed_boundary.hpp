@@ -17,11 +17,14 @@
 namespace rbcal::solver {
 
 // The kernel's footprint around one point: node offsets and weights per direction.
-struct KernelStencil {
-  int count = 0;  // support width
-  std::array<int, 4> x{}, y{}, z{};  // lattice indices (wrapped in x and z)
+// Two cache lines exactly (16-bit indices: lattices up to 32767 nodes a side): the
+// stencils of all nodes are stored once per membrane update and read twice.
+struct alignas(64) KernelStencil {
   std::array<double, 4> wx{}, wy{}, wz{};
+  std::array<std::int16_t, 4> x{}, y{}, z{};  // lattice indices (wrapped in x and z)
+  std::int16_t count = 0;                     // support width
 };
+static_assert(sizeof(KernelStencil) == 128);
 
 KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
 
