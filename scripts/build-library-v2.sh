@@ -9,10 +9,11 @@
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the extrapolation (they stay in
-#   data/library/v2/n8). The shipped default is built with
-#   N8_LEAVE_OUT="phi0.55_Ca3.2_lambda0.1 phi0.55_Ca3.2_lambda10": with those two pairs and
-#   no N_a 8 run at dense low Ca, the correction model breaks the library's trends
-#   (docs/library.md, "Library v2 as the default: acceptance").
+#   data/library/v2/n8). The shipped default is the 15-pair build, reproduced by
+#   N8_LEAVE_OUT="phi0.55_Ca3.2_lambda0.1 phi0.55_Ca3.2_lambda10 phi0.549_Ca0.0128_lambda0.606 phi0.55_Ca0.01_lambda0.1 phi0.55_Ca0.01_lambda10"
+#   (the first two broke the trends before the dense low-Ca runs existed; the last three ran
+#   later, and with them the correction model still breaks the trends at phi >= 0.41:
+#   docs/library.md, "Library v2 as the default: acceptance" and "Dense, low Ca to strain 40").
 # It rewrites data/library/default/cases and surrogate.json (the default since 2026-11-24);
 # review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail
