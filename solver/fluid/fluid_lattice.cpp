@@ -44,7 +44,7 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   // The population arrays lie three cache lines apart modulo 4 KiB. When the lattice is a
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
   // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md).
-  stride_ = (static_cast<std::size_t>(config.nx) * config.ny * row_length_ + 511) / 512 * 512 + 24;
+  stride_ = staggered(static_cast<std::size_t>(config.nx) * config.ny * row_length_, 3);
   f_.resize(Q * stride_);  // zeros: the padding lanes start finite (they never feed a node)
   f_next_.resize(Q * stride_);
   // One vector of slack after the per-node fields: the last chunk of the last row loads a

@@ -68,10 +68,13 @@ class FluidLattice {
   double* force(int component) { return force_.data() + component * component_stride_; }
   const double* force(int component) const { return force_.data() + component * component_stride_; }
   // Distance between the components of a three-component per-node field (force,
-  // velocity): the node count rounded up to 4 KiB plus five cache lines. When the lattice
-  // planes are a multiple of 4 KiB apart (48 x 64 x 48: 24 KiB), unstaggered components
-  // put every stencil row of all three in the same L1 set.
-  static std::size_t component_stride(std::size_t nodes) { return (nodes + 511) / 512 * 512 + 40; }
+  // velocity): the node count staggered by five cache lines. When the lattice planes are a
+  // multiple of 4 KiB apart (48 x 64 x 48: 24 KiB), unstaggered components put every
+  // stencil row of all three in the same L1 set.
+  static std::size_t component_stride(std::size_t nodes) { return staggered(nodes, 5); }
+  // n doubles rounded up to 4 KiB (one round of L1 sets), plus `lines` cache lines: arrays
+  // laid out this far apart start in different L1 sets.
+  static std::size_t staggered(std::size_t n, std::size_t lines) { return (n + 511) / 512 * 512 + 8 * lines; }
   void clear_force();
 
   // Puts a node at equilibrium so that moments(node) returns (rho, u) under the
