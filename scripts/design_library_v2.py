@@ -29,6 +29,11 @@ PHI = (0.05, 0.55)
 LOG_CA = (math.log10(0.01), math.log10(3.2))
 LOG_LAMBDA = (-1.0, 1.0)
 LHS_POINTS, SUBSET, RESTARTS, SEED = 52, 20, 3000, 20261123
+# Round 2 of the N_a 8 tier (third and fourth sessions of 2026-11-24): design points near
+# phi 0.42 at low Ca, where the correction model had to carry the dense low-Ca drops of
+# phi 0.55 down to phi 0.41 (docs/library.md, "Dense, low Ca to strain 40"). Given by
+# their parameters, as in design.csv.
+EXTRA_N8 = [(0.423, 0.0166, 2.41), (0.426, 0.0214, 0.729)]
 COUPLING_INTERVAL, CAP, RE = 2, 0.05, 0.2
 
 
@@ -112,18 +117,20 @@ def main():
     for tier in ("n6", "n8"):
         os.makedirs(os.path.join(out, tier), exist_ok=True)
     with open(os.path.join(out, "design.csv"), "w") as design:
-        design.write("# v2 library design (scripts/design_library_v2.py): run order, parameters, N_a 8 tier\n")
+        design.write("# v2 library design (scripts/design_library_v2.py): run order, parameters, N_a 8 tier"
+                     " (1: the maximin subset, 2: round 2, EXTRA_N8)\n")
         design.write("order,phi,Ca,lambda,at_n8\n")
         for rank, i in enumerate(order):
             phi, ca, lam = unit_to_params(unit[i])
-            design.write(f"{rank},{phi:g},{ca:g},{lam:g},{int(i in subset)}\n")
+            design.write(f"{rank},{phi:g},{ca:g},{lam:g},{int(i in subset) + 2 * int((phi, ca, lam) in EXTRA_N8)}\n")
+            at_n8 = i in subset or unit_to_params(unit[i]) in EXTRA_N8
             for tier, n_a in (("n6", 6), ("n8", 8)):
-                if tier == "n8" and i not in subset:
+                if tier == "n8" and not at_n8:
                     continue
                 with open(os.path.join(out, tier, case_id(phi, ca, lam) + ".json"), "w") as f:
                     json.dump(case_file(phi, ca, lam, n_a), f, indent=1)
                     f.write("\n")
-    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset])):
+    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset or unit_to_params(unit[i]) in EXTRA_N8])):
         base = case_file(0.1, 1.0, 1.0, n_a)
         del base["params"]["phi"], base["params"]["Ca"], base["params"]["lambda"]
         base["numerics"]["Re"] = RE
@@ -136,7 +143,7 @@ def main():
         with open(os.path.join(out, f"plan_{tier}.json"), "w") as f:
             json.dump(plan, f, indent=1)
             f.write("\n")
-    print(f"{len(unit)} points, {len(subset)} also at N_a 8, in {out}")
+    print(f"{len(unit)} points, {len(subset)} also at N_a 8 (+ {len(EXTRA_N8)} in round 2), in {out}")
 
 
 if __name__ == "__main__":
