@@ -62,8 +62,9 @@ class DihedralBending {
   double k_d_;
   std::vector<Hinge> hinges_;
   std::vector<double> cos0_, sin0_;  // of each hinge's spontaneous angle
-  // Smallest |n|^2 (n: twice the area vector) used for the wings (a, b, c) and (b, a, d).
-  std::vector<double> min_n1sq_, min_n2sq_;
+  // 1 / the smallest |n|^2 (n: twice the area vector) used for the wings (a, b, c) and
+  // (b, a, d).
+  std::vector<double> inv_min_n1sq_, inv_min_n2sq_;
 };
 
 }  // namespace rbcal::solver

@@ -1,5 +1,6 @@
 #include "solver/membrane/membrane_elasticity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,7 +12,6 @@ MembraneElasticity::MembraneElasticity(const TriangleMesh& reference, const Memb
   if (!(material.shear_modulus > 0.0)) throw std::invalid_argument("membrane: shear modulus must be positive");
   if (material.law == MembraneLaw::Skalak && !(material.area_dilation_c > -0.5))
     throw std::invalid_argument("membrane: Skalak C must exceed -1/2 (positive area modulus)");
-  elements_.reserve(reference.triangles.size());
   for (std::size_t t = 0; t < reference.triangles.size(); ++t) {
     const Triangle& tri = reference.triangles[t];
     const Vec3 e1 = reference.vertices[tri[1]] - reference.vertices[tri[0]];
@@ -19,30 +19,82 @@ MembraneElasticity::MembraneElasticity(const TriangleMesh& reference, const Memb
     const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
     const double det = g11 * g22 - g12 * g12;
     if (!(det > 0.0)) throw std::invalid_argument("membrane: reference triangle " + std::to_string(t) + " is degenerate");
-    elements_.push_back({tri[0], tri[1], tri[2], g22 / det, -g12 / det, g11 / det, 1.0 / det, 0.5 * std::sqrt(det)});
+    elements_.v0.push_back(tri[0]);
+    elements_.v1.push_back(tri[1]);
+    elements_.v2.push_back(tri[2]);
+    elements_.inv_g11.push_back(g22 / det);
+    elements_.inv_g12.push_back(-g12 / det);
+    elements_.inv_g22.push_back(g11 / det);
+    elements_.inv_det_g.push_back(1.0 / det);
+    elements_.area.push_back(0.5 * std::sqrt(det));
   }
 }
 
-double MembraneElasticity::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& forces) const {
+namespace {
+
+// Elements in blocks, as in DihedralBending::add_forces: gather the three nodes into
+// arrays, compute in a loop the compiler vectorises, scatter the forces. The law is a
+// template argument so that the loop body has no branch.
+template <MembraneLaw law>
+double add_element_forces(const std::vector<Vec3>& x, const MembraneElasticity::Elements& el,
+                          const MembraneMaterial& m, std::vector<Vec3>& forces) {
+  constexpr int kBlock = 64;
+  enum { AX, AY, AZ, BX, BY, BZ, CX, CY, CZ, kCoords };
+  alignas(64) double in[kCoords][kBlock];
+  alignas(64) double out[6][kBlock];  // -dW/dx of nodes v1 and v2 (v0 takes minus their sum)
+  const double gs = m.shear_modulus, c = m.area_dilation_c;
   double energy = 0.0;
-  for (const Element& el : elements_) {
-    const Vec3 e1 = x[el.v1] - x[el.v0];
-    const Vec3 e2 = x[el.v2] - x[el.v0];
-    const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
-    const double i1 = el.inv_g11 * g11 + 2.0 * el.inv_g12 * g12 + el.inv_g22 * g22 - 2.0;
-    const double j2 = (g11 * g22 - g12 * g12) * el.inv_det_g;
-    const EnergyDensity w = strain_energy(material_, i1, j2 - 1.0);
-    energy += el.area * w.w;
-    // dI1/de1 = 2 (G^11 e1 + G^12 e2), dI2/de1 = 2 (g22 e1 - g12 e2) / det G; likewise for e2.
-    const double a = 2.0 * el.area * w.dw_dI1;
-    const double b = 2.0 * el.area * w.dw_dI2 * el.inv_det_g;
-    const Vec3 f1 = -(a * (el.inv_g11 * e1 + el.inv_g12 * e2) + b * (g22 * e1 - g12 * e2));
-    const Vec3 f2 = -(a * (el.inv_g12 * e1 + el.inv_g22 * e2) + b * (g11 * e2 - g12 * e1));
-    forces[el.v1] += f1;
-    forces[el.v2] += f2;
-    forces[el.v0] -= f1 + f2;
+  const std::size_t count = el.v0.size();
+  for (std::size_t first = 0; first < count; first += kBlock) {
+    const int n = static_cast<int>(std::min<std::size_t>(kBlock, count - first));
+    for (int i = 0; i < n; ++i) {
+      const int node[3] = {el.v0[first + i], el.v1[first + i], el.v2[first + i]};
+      for (int v = 0; v < 3; ++v)
+        for (int d = 0; d < 3; ++d) in[3 * v + d][i] = x[node[v]][d];
+    }
+    const double* inv_g11 = el.inv_g11.data() + first;
+    const double* inv_g12 = el.inv_g12.data() + first;
+    const double* inv_g22 = el.inv_g22.data() + first;
+    const double* inv_det_g = el.inv_det_g.data() + first;
+    const double* area = el.area.data() + first;
+#pragma omp simd reduction(+ : energy)
+    for (int i = 0; i < n; ++i) {
+      const double e1x = in[BX][i] - in[AX][i], e1y = in[BY][i] - in[AY][i], e1z = in[BZ][i] - in[AZ][i];
+      const double e2x = in[CX][i] - in[AX][i], e2y = in[CY][i] - in[AY][i], e2z = in[CZ][i] - in[AZ][i];
+      const double g11 = e1x * e1x + e1y * e1y + e1z * e1z;
+      const double g12 = e1x * e2x + e1y * e2y + e1z * e2z;
+      const double g22 = e2x * e2x + e2y * e2y + e2z * e2z;
+      const double i1 = inv_g11[i] * g11 + 2.0 * inv_g12[i] * g12 + inv_g22[i] * g22 - 2.0;
+      const double i2 = (g11 * g22 - g12 * g12) * inv_det_g[i] - 1.0;
+      const EnergyDensity w = law == MembraneLaw::Skalak ? skalak(i1, i2, gs, c) : neo_hookean(i1, i2, gs);
+      energy += area[i] * w.w;
+      // dI1/de1 = 2 (G^11 e1 + G^12 e2), dI2/de1 = 2 (g22 e1 - g12 e2) / det G; likewise for e2.
+      const double a = 2.0 * area[i] * w.dw_dI1;
+      const double b = 2.0 * area[i] * w.dw_dI2 * inv_det_g[i];
+      const double p11 = a * inv_g11[i] + b * g22, p12 = a * inv_g12[i] - b * g12;
+      const double p22 = a * inv_g22[i] + b * g11;
+      out[0][i] = -(p11 * e1x + p12 * e2x);
+      out[1][i] = -(p11 * e1y + p12 * e2y);
+      out[2][i] = -(p11 * e1z + p12 * e2z);
+      out[3][i] = -(p12 * e1x + p22 * e2x);
+      out[4][i] = -(p12 * e1y + p22 * e2y);
+      out[5][i] = -(p12 * e1z + p22 * e2z);
+    }
+    for (int i = 0; i < n; ++i) {
+      const Vec3 f1(out[0][i], out[1][i], out[2][i]), f2(out[3][i], out[4][i], out[5][i]);
+      forces[el.v1[first + i]] += f1;
+      forces[el.v2[first + i]] += f2;
+      forces[el.v0[first + i]] -= f1 + f2;
+    }
   }
   return energy;
+}
+
+}  // namespace
+
+double MembraneElasticity::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& forces) const {
+  return material_.law == MembraneLaw::Skalak ? add_element_forces<MembraneLaw::Skalak>(x, elements_, material_, forces)
+                                              : add_element_forces<MembraneLaw::NeoHookean>(x, elements_, material_, forces);
 }
 
 double MembraneElasticity::energy(const std::vector<Vec3>& x) const {

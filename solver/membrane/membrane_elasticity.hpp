@@ -24,15 +24,17 @@ class MembraneElasticity {
 
   const MembraneMaterial& material() const { return material_; }
 
- private:
-  struct Element {
-    int v0, v1, v2;
-    double inv_g11, inv_g12, inv_g22;  // inverse reference metric
-    double inv_det_g;                  // 1 / det G
-    double area;                       // reference area A0
+  // Per element, as structure of arrays (the force loop runs over blocks of elements).
+  struct Elements {
+    std::vector<int> v0, v1, v2;
+    std::vector<double> inv_g11, inv_g12, inv_g22;  // inverse reference metric
+    std::vector<double> inv_det_g;                  // 1 / det G
+    std::vector<double> area;                       // reference area A0
   };
+
+ private:
   MembraneMaterial material_;
-  std::vector<Element> elements_;
+  Elements elements_;
 };
 
 }  // namespace rbcal::solver
