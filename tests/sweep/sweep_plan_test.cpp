@@ -97,8 +97,8 @@ TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {
   for (const std::string tier : {"n6", "n8"}) {
     const std::string dir = std::string(RBCAL_CASES_DIR) + "/library_v2/";
     const SweepPlan plan = read_sweep_plan(dir + "plan_" + tier + ".json");
-    // N_a 8: the 20 of the maximin subset and the 2 of round 2 (EXTRA_N8 in the script).
-    EXPECT_EQ(plan.cases.size(), tier == "n6" ? 60u : 22u);
+    // N_a 8: the 20 of the maximin subset and the 14 of round 2 (every point at phi >= 0.38).
+    EXPECT_EQ(plan.cases.size(), tier == "n6" ? 60u : 34u);
     for (const PlannedCase& c : plan.cases) {
       const SimulationCase file = read_case(dir + tier + "/" + c.id + ".json");
       EXPECT_EQ(file.flow.capillary_number, c.spec.flow.capillary_number) << c.id;
