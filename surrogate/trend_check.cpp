@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -65,7 +66,9 @@ TrendCheck check_trends(const ViscosityModel& model) {
       for (std::size_t i = 0; i + 1 < t.capillary_number.size(); ++i) {
         ++t.ca_steps;
         const double a = eta(phi, t.capillary_number[i], lambda), b = eta(phi, t.capillary_number[i + 1], lambda);
-        if (!(b < a)) t.not_falling_with_ca.push_back({phi, t.capillary_number[i], lambda, a, b});
+        if (!(b < a))
+          t.not_falling_with_ca.push_back(
+              {phi, t.capillary_number[i], lambda, a, b, model.predict(phi, t.capillary_number[i], lambda).sd});
       }
     }
   t.high_shear_phi = std::clamp(0.41, r.phi_min, r.phi_max);
@@ -90,6 +93,18 @@ std::string TrendCheck::report() const {
   o << "  falls with Ca (phi >= 0.21): " << (not_falling_with_ca.empty() ? "PASS" : "FAIL") << " ("
     << not_falling_with_ca.size() << " of " << ca_steps << " steps not falling" << worst(not_falling_with_ca, "Ca")
     << ")\n";
+  if (!not_falling_with_ca.empty()) {
+    // Where they are, and whether the model resolves them (a step far below its sd is flat).
+    std::map<double, int> per_phi;
+    double largest = 0.0;
+    for (const TrendViolation& v : not_falling_with_ca) {
+      ++per_phi[v.phi];
+      largest = std::max(largest, v.size_in_sd());
+    }
+    o << "    not falling, per phi (of " << (capillary_number.size() - 1) * viscosity_ratio.size() << " steps):";
+    for (const auto& [p, n] : per_phi) o << " " << number(p) << ": " << n << ";";
+    o << " the largest rise is " << number(largest) << " sd of the model\n";
+  }
   o << "  high shear (phi " << number(high_shear_phi) << ", Ca " << number(high_shear_ca) << ", lambda "
     << number(high_shear_lambda) << "): " << (high_shear_ok() ? "PASS" : "FAIL") << " (eta_re "
     << number(high_shear_eta_re) << " against " << number(high_shear_pries) << " from Pries et al. 1992, ratio "

@@ -9,6 +9,7 @@
 //    (0.55^-0.8 - 1) (eta_45 = 3.2, C = -0.8; transcription in docs/validation.md);
 //  - the dilute end: the intrinsic viscosity (eta_re - 1) / phi at the smallest probed phi,
 //    reported at the lowest and highest Ca (no pass/fail: docs/library.md compares it).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ double pries_1992_relative_viscosity(double hematocrit);
 struct TrendViolation {
   double phi, capillary_number, viscosity_ratio;  // the lower end of the failing step
   double eta_re_here, eta_re_next;                // at this point and the next along the trend's axis
+  double sd_here = 0.0;                           // the model's predictive sd of eta_re at this point
+  // The step against the trend in units of that sd (0 where the model gives no sd).
+  double size_in_sd() const { return sd_here > 0.0 ? std::abs(eta_re_next - eta_re_here) / sd_here : 0.0; }
 };
 
 struct TrendCheck {
@@ -33,7 +37,9 @@ struct TrendCheck {
   double intrinsic_low_ca = 0.0, intrinsic_high_ca = 0.0;  // (eta_re - 1) / phi at the smallest phi
   bool high_shear_ok() const;  // within 25 % of Pries
   bool passed() const { return not_rising_with_phi.empty() && not_falling_with_ca.empty() && high_shear_ok(); }
-  std::string report() const;  // one line per check, the worst violations listed
+  // One line per check, the worst violations listed; for the Ca trend also the count per
+  // phi and the largest step against it in units of the model's sd.
+  std::string report() const;
 };
 
 // Probe grid: phi 0.05 to 0.55 (11 values), Ca 0.01 to 3.2 (log, 11 values), lambda 0.1,

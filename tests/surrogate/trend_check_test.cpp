@@ -17,8 +17,14 @@ class TrendModel : public ViscosityModel {
  public:
   double a = 2.5;
   bool dent = false;
+  bool flat_dense = false;  // above phi 0.48, eta_re rises with Ca by 0.1 % per step (sd 1 %)
   ViscosityPrediction predict(double phi, double ca, double lambda) const override {
     ViscosityPrediction p;
+    if (flat_dense && phi > 0.48) {
+      p.eta_re = std::exp(phi * a) * (1.0 + 1e-3 * std::log(ca / 0.01) / std::log(3.2 / 0.01) * 10.0);
+      p.sd = 0.01 * p.eta_re;
+      return p;
+    }
     double alpha = a - 0.3 * std::log(ca) + 0.05 * std::log(lambda);
     if (dent && ca < 0.02 && phi > 0.45) alpha *= 0.45 / phi;  // phi alpha held at its phi 0.45 value ...
     p.eta_re = std::exp(phi * alpha) * (dent && ca < 0.02 && phi > 0.45 ? 1.0 - (phi - 0.45) : 1.0);  // ... times a falling factor
@@ -68,4 +74,22 @@ TEST(TrendCheck, FailsAtHighShearFarFromBlood) {
   const TrendCheck t = check_trends(m);
   EXPECT_FALSE(t.high_shear_ok());
   EXPECT_NE(t.report().find("high shear (phi 0.41, Ca 0.8, lambda 5): FAIL"), std::string::npos) << t.report();
+}
+
+// The Ca trend's violations are counted per phi and sized in the model's sd, so a report
+// tells a flat dense corner (steps far below the sd) from a resolved rise.
+TEST(TrendCheck, CountsCaViolationsPerPhiInUnitsOfTheSd) {
+  TrendModel m;
+  m.flat_dense = true;
+  const TrendCheck t = check_trends(m);
+  // Probe phi 0.5 and 0.55 lie above 0.48: every one of their 10 Ca steps x 6 lambda rises.
+  ASSERT_EQ(t.not_falling_with_ca.size(), 120u);
+  for (const TrendViolation& v : t.not_falling_with_ca) {
+    EXPECT_GT(v.phi, 0.48);
+    // Each step rises by 1 % of eta_re over the 10 steps / 10 = 0.1 %, i.e. 0.1 sd.
+    EXPECT_NEAR(v.size_in_sd(), 0.1, 0.01);
+  }
+  EXPECT_NE(t.report().find("not falling, per phi (of 60 steps): 0.5: 60; 0.55: 60; the largest rise is 0.1"),
+            std::string::npos)
+      << t.report();
 }
