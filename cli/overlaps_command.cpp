@@ -3,7 +3,8 @@
 // written before result.json carried these figures, and for states mid-run. It also
 // names the fastest node, where it sits and how close another cell comes: for the states
 // a run keeps when its node Mach guard trips (checkpoint_failed.bin), and the mesh's
-// health: collapsed triangles and folded hinges (solver/membrane/mesh_health.hpp).
+// health: collapsed triangles and folded hinges (solver/membrane/mesh_health.hpp), and how
+// the cells sit across the gap (layers: solver/simulation/gap_profile.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
 #include "solver/simulation/checkpoint.hpp"
+#include "solver/simulation/gap_profile.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::cli {
@@ -123,6 +125,15 @@ void run_overlaps(const OverlapsOptions& o) {
   std::printf("  folded hinges              %ld of %ld (normals over 120 degrees apart), in %ld of %zu cells\n",
               q.folded_hinges, q.hinges, q.cells_with_folds, s.positions.size());
   print_fastest_node(s, u, mesh);
+  // Layers across the gap: cell centres per quarter radius; a centre stays about a
+  // half-thickness (a / 2 for a resting disc) away from a wall, so the layering number
+  // leaves out the bins within a / 2.
+  const solver::GapProfile g = solver::cell_centres_across_gap(s.positions, u.ny, 0.25 * a, 0.5 * a);
+  std::printf("  cell centres across the gap (per a / 4 from the lower wall):");
+  for (int n : g.counts) std::printf(" %d", n);
+  std::printf("\n  layering                   %.2f (sd / mean of the counts away from the walls; about %.2f for "
+              "centres at random)\n",
+              g.layering, 1.0 / std::sqrt(std::max(1.0, static_cast<double>(s.positions.size()) / g.counts.size())));
 }
 
 }  // namespace
