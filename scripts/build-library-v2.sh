@@ -8,12 +8,11 @@
 #      scripts/extrapolation_check.py);
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
-#   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the extrapolation (they stay in
-#   data/library/v2/n8). The shipped default is the 15-pair build, reproduced by
-#   N8_LEAVE_OUT="phi0.55_Ca3.2_lambda0.1 phi0.55_Ca3.2_lambda10 phi0.549_Ca0.0128_lambda0.606 phi0.55_Ca0.01_lambda0.1 phi0.55_Ca0.01_lambda10"
-#   (the first two broke the trends before the dense low-Ca runs existed; the last three ran
-#   later, and with them the correction model still breaks the trends at phi >= 0.41:
-#   docs/library.md, "Library v2 as the default: acceptance" and "Dense, low Ca to strain 40").
+#   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the extrapolation, and
+#   N8_USE_FILE=FILE uses only the N_a 8 cases FILE lists (one ID per line, # comments);
+#   either way all cases stay in data/library/v2/n8. The shipped default is reproduced by
+#   N8_USE_FILE=data/library/v2/default_n8_cases.txt (15 of the maximin subset; that file
+#   says why the others are left out; docs/library.md, "Round 2 and the layers").
 # It rewrites data/library/default/cases and surrogate.json (the default since 2026-11-24);
 # review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail
@@ -27,11 +26,21 @@ done
 count() { if [ -d "$1" ]; then find "$1" -name "*.json" | wc -l; else echo 0; fi; }
 n6=$(count "$lib/n6/cases")
 fine="$lib/n8"
-if [ -n "${N8_LEAVE_OUT:-}" ]; then
+if [ -n "${N8_LEAVE_OUT:-}" ] || [ -n "${N8_USE_FILE:-}" ]; then
   fine="$(mktemp -d)"
   trap 'rm -rf "$fine"' EXIT
-  cp -r "$lib/n8/." "$fine/"
-  for id in $N8_LEAVE_OUT; do rm -f "$fine/cases/$id.json" "$fine/cases/$id.csv"; done
+  mkdir -p "$fine/cases"
+  cp "$lib/n8/plan.json" "$fine/" 2>/dev/null || true
+  if [ -n "${N8_USE_FILE:-}" ]; then
+    [ -f "$N8_USE_FILE" ] || { echo "N8_USE_FILE: no such file: $N8_USE_FILE" >&2; exit 1; }
+    for id in $(grep -v '^#' "$N8_USE_FILE"); do
+      [ -f "$lib/n8/cases/$id.json" ] || { echo "$N8_USE_FILE: no N_a 8 case $id in $lib/n8/cases" >&2; exit 1; }
+      cp "$lib/n8/cases/$id.json" "$lib/n8/cases/$id.csv" "$fine/cases/"
+    done
+  else
+    cp -r "$lib/n8/cases/." "$fine/cases/"
+  fi
+  for id in ${N8_LEAVE_OUT:-}; do rm -f "$fine/cases/$id.json" "$fine/cases/$id.csv"; done
 fi
 n8=$(count "$fine/cases")
 echo "v2: $n6 case(s) at N_a 6, $n8 at N_a 8"
@@ -49,6 +58,7 @@ mkdir -p "$out"
 exec > >(tee "$out/build_report.txt") 2>&1
 echo "rbcal $(git rev-parse --short HEAD)$(git diff --quiet || echo -dirty), $(date -u +%F)"
 [ -n "${N8_LEAVE_OUT:-}" ] && echo "N_a 8 cases left out: $N8_LEAVE_OUT"
+[ -n "${N8_USE_FILE:-}" ] && echo "N_a 8 cases used: those listed in $N8_USE_FILE"
 "$rbcal" library extrapolate "$lib/n6" "$fine" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
   --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
 "$rbcal" surrogate build "$out"
