@@ -16,6 +16,9 @@ constexpr double kLineOffsetY = 1.0e-7 * 2.71828182845905;
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
+// Lattice columns (x) per chunk of the parallel apply.
+constexpr int kColumnsPerChunk = 2;
+
 }  // namespace
 
 InsideFraction::InsideFraction(int nx, int ny, int nz, int lines_per_spacing)
@@ -28,17 +31,16 @@ InsideFraction::InsideFraction(int nx, int ny, int nz, int lines_per_spacing)
 
 void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positions,
                             const std::vector<Triangle>& triangles) {
-  // Clear the previous footprint, then record each node of the new one once (marks).
-  std::vector<std::size_t> previous;
-  previous.reserve(inside_.size());
-  for (std::size_t n : inside_) {
-    alpha_[n] = 0.0;
-    marked_[n] = 0;
-    previous.push_back(n);
+  // Clear the previous footprint (each node listed once: parallel), keep it as previous_.
+  previous_.swap(inside_);
+  const long previous = static_cast<long>(previous_.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < previous; ++i) {
+    alpha_[previous_[i]] = 0.0;
+    marked_[previous_[i]] = 0;
   }
   inside_.clear();
-  // The scan-line crossings of each mesh are independent (parallel); applying them to
-  // alpha is not (neighbouring cells share boundary nodes), so it runs in order.
+  // The scan-line crossings of each mesh are independent (parallel).
   crossings_.resize(positions.size());
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < positions.size(); ++i) crossings_of(*positions[i], triangles, crossings_[i]);
@@ -46,10 +48,19 @@ void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positio
     if (crossings_[i].oversized)
       throw std::runtime_error("inside fraction: cell " + std::to_string(i) +
                                " spans more than the lattice in x or y (the membrane has blown up)");
-  for (const Crossings& c : crossings_) apply(c);
-  // Changed nodes: the old footprint and the new (a node may appear in both).
-  touched_ = std::move(previous);
-  touched_.insert(touched_.end(), inside_.begin(), inside_.end());
+  // Applying them to alpha: neighbouring cells share boundary nodes, but a node lies in
+  // one lattice column, so chunks of columns run in parallel. Within a chunk the cells
+  // go in order, so every node sums its cells in the same order as a serial pass would,
+  // whatever the thread count; the nodes each chunk reaches are joined in chunk order.
+  const int chunks = (nx_ + kColumnsPerChunk - 1) / kColumnsPerChunk;
+  reached_.resize(chunks);
+#pragma omp parallel for schedule(dynamic)
+  for (int k = 0; k < chunks; ++k) {
+    reached_[k].clear();
+    const int lo = k * kColumnsPerChunk, hi = std::min(nx_, lo + kColumnsPerChunk);
+    for (const Crossings& c : crossings_) apply(c, lo, hi, reached_[k]);
+  }
+  for (const auto& r : reached_) inside_.insert(inside_.end(), r.begin(), r.end());
 }
 
 void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles,
@@ -112,33 +123,42 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
       for (std::size_t k = m; k > begin && out.hits[k].z < out.hits[k - 1].z; --k) std::swap(out.hits[k], out.hits[k - 1]);
 }
 
-void InsideFraction::apply(const Crossings& c) {
+void InsideFraction::apply(const Crossings& c, int column_lo, int column_hi, std::vector<std::size_t>& reached) {
   const double weight = 1.0 / (sub_ * sub_);  // each line stands for 1/S^2 of its column
   const int pbase = c.pbase, qbase = c.qbase, qcount = c.qcount;
-  for (std::size_t begin = 0, end = 0; begin < c.hits.size(); begin = end) {
-    end = begin;
-    while (end < c.hits.size() && c.hits[end].line == c.hits[begin].line) ++end;
-    const int line = c.hits[begin].line;
-    const int p = pbase + line / qcount, q = qbase + line % qcount;
+  if (c.hits.empty() || qcount == 0) return;
+  // The mesh's lines from column p: lines (p - pbase) qcount ... + qcount - 1, hits found
+  // through line_start (after the sort, line_start[l] is the end of line l's hits).
+  const int pcount = static_cast<int>((c.line_start.size() - 1) / qcount);
+  for (int pl = 0; pl < pcount; ++pl) {
+    const int p = pbase + pl;
     const int i = static_cast<int>(std::floor(static_cast<double>(p) / sub_));
-    const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
-    if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
-    const std::size_t column = (static_cast<std::size_t>(wrap(i, nx_)) * ny_ + j) * nz_;
-    int winding = 0;
-    for (std::size_t m = begin; m + 1 < end; ++m) {
-      winding += c.hits[m].sign;
-      if (winding <= 0) continue;
-      // [z0, z1] is inside: give each node k the overlap with [k - 1/2, k + 1/2].
-      const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
-      const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
-      for (int k = k0; k <= k1; ++k) {
-        const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);
-        if (overlap <= 0.0) continue;
-        const std::size_t node = column + wrap(k, nz_);
-        alpha_[node] = std::min(1.0, alpha_[node] + weight * overlap);
-        if (!marked_[node]) {
-          marked_[node] = 1;
-          inside_.push_back(node);
+    const int column_x = wrap(i, nx_);
+    if (column_x < column_lo || column_x >= column_hi) continue;
+    for (int ql = 0; ql < qcount; ++ql) {
+      const int line = pl * qcount + ql;
+      const std::size_t begin = line == 0 ? 0 : c.line_start[line - 1], end = c.line_start[line];
+      if (end - begin < 2) continue;
+      const int q = qbase + ql;
+      const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
+      if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
+      const std::size_t column = (static_cast<std::size_t>(column_x) * ny_ + j) * nz_;
+      int winding = 0;
+      for (std::size_t m = begin; m + 1 < end; ++m) {
+        winding += c.hits[m].sign;
+        if (winding <= 0) continue;
+        // [z0, z1] is inside: give each node k the overlap with [k - 1/2, k + 1/2].
+        const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
+        const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
+        for (int k = k0; k <= k1; ++k) {
+          const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);
+          if (overlap <= 0.0) continue;
+          const std::size_t node = column + wrap(k, nz_);
+          alpha_[node] = std::min(1.0, alpha_[node] + weight * overlap);
+          if (!marked_[node]) {
+            marked_[node] = 1;
+            reached.push_back(node);
+          }
         }
       }
     }

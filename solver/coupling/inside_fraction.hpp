@@ -29,8 +29,10 @@ class InsideFraction {
 
   const std::vector<double>& alpha() const { return alpha_; }
   // Nodes whose alpha may have changed in the last update (for incremental viscosity
-  // updates); a node can be listed twice.
-  const std::vector<std::size_t>& touched() const { return touched_; }
+  // updates): the footprint before it and the footprint after it, each node once per list
+  // (a node can be in both), so that either list can be walked in parallel.
+  const std::vector<std::size_t>& previous_footprint() const { return previous_; }
+  const std::vector<std::size_t>& footprint() const { return inside_; }
 
  private:
   // Signed z-crossings of one mesh on the scan lines of its bounding box, sorted by
@@ -48,14 +50,17 @@ class InsideFraction {
     std::vector<int> line_start;  // scratch for the counting sort by line
   };
   void crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, Crossings& out) const;
-  void apply(const Crossings& c);
+  // Adds the inside intervals of c's scan lines in lattice columns [column_lo, column_hi)
+  // (wrapped x) to alpha, listing newly reached nodes in `reached`.
+  void apply(const Crossings& c, int column_lo, int column_hi, std::vector<std::size_t>& reached);
 
   int nx_, ny_, nz_;
   int sub_;  // scan lines per lattice spacing in x and in y
   std::vector<double> alpha_;
   std::vector<std::size_t> inside_;  // nodes with alpha > 0, each once
   std::vector<unsigned char> marked_;  // 1 for the nodes in inside_
-  std::vector<std::size_t> touched_;
+  std::vector<std::size_t> previous_;  // inside_ before the last update
+  std::vector<std::vector<std::size_t>> reached_;  // per column chunk, reused between updates
   std::vector<Crossings> crossings_;  // per mesh, reused between updates
 };
 

@@ -111,7 +111,15 @@ void ShearFlowSimulation::rebuild_viscosity() {
   inside_.update(meshes, membrane_->reference().triangles);
   double* nu = fluid_.viscosity();
   const double lambda = case_.flow.viscosity_ratio;
-  for (std::size_t n : inside_.touched()) nu[n] = units_.nu_out * (1.0 + (lambda - 1.0) * inside_.alpha()[n]);
+  const double* alpha = inside_.alpha().data();
+  const double nu_out = units_.nu_out;
+  // The footprints before and after the update, each without repeats (so parallel).
+  for (const std::vector<std::size_t>* nodes : {&inside_.previous_footprint(), &inside_.footprint()}) {
+    const long count = static_cast<long>(nodes->size());
+    const std::size_t* n = nodes->data();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < count; ++i) nu[n[i]] = nu_out * (1.0 + (lambda - 1.0) * alpha[n[i]]);
+  }
 }
 
 void ShearFlowSimulation::move_cells(double dt) {
