@@ -111,6 +111,7 @@ def main():
     lhs = maximin_lhs(LHS_POINTS, corners, rng)
     unit = corners + lhs
     subset = set(greedy_subset(unit, SUBSET, range(len(corners))))
+    round2 = {i for i in range(len(unit)) if i not in subset and unit_to_params(unit[i])[0] >= ROUND2_PHI}
     # Run order: the N_a 8 subset first (the extrapolation needs both tiers), then the rest,
     # each in maximin order so that an unfinished library is still spread out.
     order = greedy_subset(unit, len(unit), [0])
@@ -123,16 +124,14 @@ def main():
         design.write("order,phi,Ca,lambda,at_n8\n")
         for rank, i in enumerate(order):
             phi, ca, lam = unit_to_params(unit[i])
-            round2 = i not in subset and phi >= ROUND2_PHI
-            design.write(f"{rank},{phi:g},{ca:g},{lam:g},{int(i in subset) + 2 * int(round2)}\n")
-            at_n8 = i in subset or round2
+            design.write(f"{rank},{phi:g},{ca:g},{lam:g},{int(i in subset) + 2 * int(i in round2)}\n")
             for tier, n_a in (("n6", 6), ("n8", 8)):
-                if tier == "n8" and not at_n8:
+                if tier == "n8" and i not in subset | round2:
                     continue
                 with open(os.path.join(out, tier, case_id(phi, ca, lam) + ".json"), "w") as f:
                     json.dump(case_file(phi, ca, lam, n_a), f, indent=1)
                     f.write("\n")
-    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset or unit_to_params(unit[i])[0] >= ROUND2_PHI])):
+    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset | round2])):
         base = case_file(0.1, 1.0, 1.0, n_a)
         del base["params"]["phi"], base["params"]["Ca"], base["params"]["lambda"]
         base["numerics"]["Re"] = RE
@@ -145,8 +144,7 @@ def main():
         with open(os.path.join(out, f"plan_{tier}.json"), "w") as f:
             json.dump(plan, f, indent=1)
             f.write("\n")
-    round2 = sum(1 for i in range(len(unit)) if i not in subset and unit_to_params(unit[i])[0] >= ROUND2_PHI)
-    print(f"{len(unit)} points, {len(subset)} also at N_a 8 (+ {round2} in round 2), in {out}")
+    print(f"{len(unit)} points, {len(subset)} also at N_a 8 (+ {len(round2)} in round 2), in {out}")
 
 
 if __name__ == "__main__":

@@ -65,10 +65,9 @@ TrendCheck check_trends(const ViscosityModel& model) {
       if (phi < 0.21 - 1e-12) continue;
       for (std::size_t i = 0; i + 1 < t.capillary_number.size(); ++i) {
         ++t.ca_steps;
-        const double a = eta(phi, t.capillary_number[i], lambda), b = eta(phi, t.capillary_number[i + 1], lambda);
-        if (!(b < a))
-          t.not_falling_with_ca.push_back(
-              {phi, t.capillary_number[i], lambda, a, b, model.predict(phi, t.capillary_number[i], lambda).sd});
+        const ViscosityPrediction here = model.predict(phi, t.capillary_number[i], lambda);
+        const double b = eta(phi, t.capillary_number[i + 1], lambda);
+        if (!(b < here.eta_re)) t.not_falling_with_ca.push_back({phi, t.capillary_number[i], lambda, here.eta_re, b, here.sd});
       }
     }
   t.high_shear_phi = std::clamp(0.41, r.phi_min, r.phi_max);
