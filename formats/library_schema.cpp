@@ -22,6 +22,9 @@ const std::vector<SignatureField>& numerics_signature_fields() {
       {"numerics.integrator", json("rk4")},
       {"numerics.indicator_tolerance", json(0.0)},
       {"numerics.coupling_interval", json(1)},
+      // Before this field existed a coupling interval moved the membrane by the velocity
+      // after its last fluid step (at k = 1 the field does not matter: compared as null).
+      {"numerics.node_velocity", json("last_step")},
       {"numerics.volume_stiffness", json(0.0)},
       {"cells.triangles", std::nullopt},
       {"cells.shape", std::nullopt},
@@ -45,6 +48,7 @@ nlohmann::json numerics_signature(const nlohmann::json& case_file, const std::st
     if (!node && !f.absent) r.fail(f.path, "missing");
     signature[f.path] = node ? *node : *f.absent;
   }
+  if (signature["numerics.coupling_interval"] == 1) signature["numerics.node_velocity"] = nullptr;
   return signature;
 }
 

@@ -79,7 +79,7 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
   for (int q = 0; q < Q; ++q) f_[q * stride_ + padded(node)] = feq[q];
 }
 
-void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
+void FluidLattice::update_row(int x, int y, double* const velocity_out[3], bool accumulate) {
   using simd::vdouble;
   constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
@@ -166,9 +166,9 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
     if (velocity_out) {
       for (int d = 0; d < 3; ++d) {
         double* out_u = velocity_out[d] + row + z0;
-        if (z0 + W <= nz) simd::store(out_u, u[d]);
+        if (z0 + W <= nz) simd::store(out_u, accumulate ? simd::load(out_u) + u[d] : u[d]);
         else
-          for (int l = 0; z0 + l < nz; ++l) out_u[l] = u[d][l];
+          for (int l = 0; z0 + l < nz; ++l) out_u[l] = accumulate ? out_u[l] + u[d][l] : u[d][l];
       }
     }
     // Whole vectors into the padded, aligned rows (the padding lanes included).
@@ -176,7 +176,7 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3]) {
   }
 }
 
-void FluidLattice::step(double* const velocity_out[3]) {
+void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
   const int nx = config_.nx, ny = config_.ny;
   // Below a few thousand nodes a thread team costs more than it saves.
   const bool threaded = nodes_ >= 4096;
@@ -184,7 +184,7 @@ void FluidLattice::step(double* const velocity_out[3]) {
   {
 #pragma omp for collapse(2) schedule(static) nowait
     for (int x = 0; x < nx; ++x)
-      for (int y = 0; y < ny; ++y) update_row(x, y, velocity_out);
+      for (int y = 0; y < ny; ++y) update_row(x, y, velocity_out, accumulate);
     simd::store_fence();  // streaming stores visible before the barrier
   }
   f_.swap(f_next_);

@@ -84,8 +84,9 @@ class FluidLattice {
   // One time step: pull-stream with the wall conditions, then TRT collision. With
   // velocity_out, also writes each node's velocity u[d][node], equal to moments(node)
   // after the step up to round-off (the immersed boundary's interpolation field, at
-  // 24 B per node instead of a second pass over the 19 populations).
-  void step(double* const velocity_out[3] = nullptr);
+  // 24 B per node instead of a second pass over the 19 populations). With accumulate the
+  // velocity is added to what velocity_out holds (the sum over a coupling interval).
+  void step(double* const velocity_out[3] = nullptr, bool accumulate = false);
 
   NodeMoments moments(std::size_t node) const;
   // The whole state (post-collision populations and step count), for checkpoints, in the
@@ -99,7 +100,7 @@ class FluidLattice {
 
  private:
   // Pull-stream and collide the nodes (x, y, 0..nz-1) into the next population array.
-  void update_row(int x, int y, double* const velocity_out[3]);
+  void update_row(int x, int y, double* const velocity_out[3], bool accumulate);
 
   // Where node n's populations sit in a padded population array.
   std::size_t padded(std::size_t node) const { return node + node / config_.nz * (row_length_ - config_.nz); }

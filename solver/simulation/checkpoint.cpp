@@ -11,8 +11,10 @@ namespace rbcal::solver {
 
 namespace {
 
-// Version 2 added the indicator positions (and numerics.indicator_tolerance to the case).
-constexpr char kMagic[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '2'};
+// Version 2 added the indicator positions (and numerics.indicator_tolerance to the case),
+// version 3 the velocity summed over a coupling interval (numerics.node_velocity).
+constexpr char kMagic[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '3'};
+constexpr char kMagicV2[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '2'};
 constexpr char kMagicV1[8] = {'R', 'B', 'C', 'A', 'L', 'C', 'K', '1'};
 
 class Writer {
@@ -85,6 +87,8 @@ void write_checkpoint(const std::string& path, const CheckpointState& s) {
   w.cells(s.velocities);
   w.cells(s.forces);
   w.cells(s.indicator_positions);
+  w.doubles(s.velocity_sum.data(), s.velocity_sum.size());
+  w.u64(s.velocity_sum_steps);
   out.write(kMagic, sizeof kMagic);  // end marker: a complete file
   formats::write_file_atomically(path, out.str());
 }
@@ -97,7 +101,8 @@ CheckpointState read_checkpoint(const std::string& path) {
   in.read(magic, sizeof magic);
   if (in && std::equal(magic, magic + 8, kMagicV1))
     r.fail("format 1, written by an older rbcal; remove it to run the case from its start");
-  if (!in || !std::equal(magic, magic + 8, kMagic)) r.fail("not an rbcal checkpoint");
+  const bool version2 = in && std::equal(magic, magic + 8, kMagicV2);
+  if (!in || !(version2 || std::equal(magic, magic + 8, kMagic))) r.fail("not an rbcal checkpoint");
   CheckpointState s;
   const std::uint64_t json_size = r.u64();
   if (json_size > (1u << 26)) r.fail("implausible case size");
@@ -109,8 +114,12 @@ CheckpointState read_checkpoint(const std::string& path) {
   s.velocities = r.cells();
   s.forces = r.cells();
   s.indicator_positions = r.cells();
+  if (!version2) {
+    s.velocity_sum = r.doubles();
+    s.velocity_sum_steps = r.u64();
+  }
   in.read(magic, sizeof magic);
-  if (!in || !std::equal(magic, magic + 8, kMagic)) r.fail("truncated (no end marker)");
+  if (!in || !std::equal(magic, magic + 8, version2 ? kMagicV2 : kMagic)) r.fail("truncated (no end marker)");
   return s;
 }
 

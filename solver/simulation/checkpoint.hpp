@@ -21,6 +21,11 @@ struct CheckpointState {
   // Node positions the inside fraction was last built from (numerics.indicator_tolerance);
   // empty where the viscosity is uniform.
   std::vector<std::vector<Vec3>> indicator_positions;
+  // Inside a coupling interval under numerics.node_velocity "interval_mean": the fluid
+  // velocity field summed over the interval's steps so far, and their number (empty and
+  // 0 otherwise, and in format 2 files).
+  std::vector<double> velocity_sum;
+  std::uint64_t velocity_sum_steps = 0;
 };
 
 void write_checkpoint(const std::string& path, const CheckpointState& state);

@@ -127,7 +127,12 @@ void ShearFlowSimulation::move_cells(double dt) {
   const int nx = units_.nx, ny = units_.ny, nz = units_.nz;
   const std::size_t stride = FluidLattice::component_stride(fluid_.node_count());
   const double* const u[3] = {u_field_.data(), u_field_.data() + stride, u_field_.data() + 2 * stride};
-  auto velocity_at = [&](const Vec3& p) { return interpolate_field(make_stencil(k, p, nx, ny, nz), u, ny, nz); };
+  // The field holds a sum over u_field_steps_ fluid steps (one but under the interval
+  // mean); a division by 1 is exact, so k = 1 moves the nodes as before.
+  const double steps = static_cast<double>(u_field_steps_);
+  auto velocity_at = [&](const Vec3& p) {
+    return Vec3(interpolate_field(make_stencil(k, p, nx, ny, nz), u, ny, nz) / steps);
+  };
   // All nodes of all cells in one parallel loop, in the order of their stencils' rows
   // (order_nodes, built from these positions when the forces were spread).
   const long total = static_cast<long>(order_.nodes.size());
@@ -136,7 +141,7 @@ void ShearFlowSimulation::move_cells(double dt) {
   for (long g = 0; g < total; ++g) {
     const auto [cell, m] = order_.nodes[g];
     const Vec3& x = order_.position[g];
-    const Vec3 u1 = interpolate_field(order_.stencil[g], u, ny, nz);
+    const Vec3 u1 = interpolate_field(order_.stencil[g], u, ny, nz) / steps;
     Vec3 velocity = u1;
     if (case_.integrator != Integrator::Euler) {
       // Classical RK4 through the velocity field of this step (over dt).
@@ -188,15 +193,20 @@ void ShearFlowSimulation::step() {
     update_viscosity();
     lap(timings_.indicator);
   }
-  // The step before a membrane update also writes the velocity field it interpolates.
+  // The fluid writes the velocity field the membrane update interpolates: at every step
+  // of the interval, summed, for the interval mean; at the last step for the last step's.
   const bool update_follows = (fluid_.steps_done() + 1) % interval == 0;
+  const bool write_u = update_follows || case_.node_velocity == NodeVelocity::IntervalMean;
+  const bool add_to_sum = write_u && case_.node_velocity == NodeVelocity::IntervalMean && u_field_steps_ > 0;
   const std::size_t stride = FluidLattice::component_stride(fluid_.node_count());
-  if (update_follows && u_field_.size() != 3 * stride) u_field_.assign(3 * stride, 0.0);
+  if (write_u && u_field_.size() != 3 * stride) u_field_.assign(3 * stride, 0.0);
   double* const u[3] = {u_field_.data(), u_field_.data() + stride, u_field_.data() + 2 * stride};
-  fluid_.step(update_follows ? u : nullptr);
+  fluid_.step(write_u ? u : nullptr, add_to_sum);
+  if (write_u) u_field_steps_ = add_to_sum ? u_field_steps_ + 1 : 1;
   lap(timings_.fluid);
   if (fluid_.steps_done() % interval == 0) {
     move_cells(static_cast<double>(interval));
+    u_field_steps_ = 0;
     lap(timings_.interpolation);
   }
   ++timings_.steps;
@@ -211,6 +221,11 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   s.velocities = v_;
   s.forces = f_;
   s.indicator_positions = x_indicator_;
+  // Inside an interval the velocity summed so far is part of the state.
+  if (fluid_.steps_done() % case_.coupling_interval != 0 && u_field_steps_ > 0) {
+    s.velocity_sum = u_field_;
+    s.velocity_sum_steps = u_field_steps_;
+  }
   write_checkpoint(path, s);
 }
 
@@ -218,11 +233,27 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
   CheckpointState s = read_checkpoint(path);
   nlohmann::json saved = nlohmann::json::parse(s.case_json), ours = state_defining_json(case_);
   const int saved_interval = saved["numerics"].value("coupling_interval", 1);
-  if (any_coupling_interval) {
-    saved["numerics"].erase("coupling_interval");
-    ours["numerics"].erase("coupling_interval");
+  // Checkpoints from before numerics.node_velocity moved their membranes by the last
+  // step's velocity.
+  if (saved_interval > 1 && !saved["numerics"].contains("node_velocity"))
+    saved["numerics"]["node_velocity"] = to_string(NodeVelocity::LastStep);
+  if (any_coupling_interval)
+    for (nlohmann::json* j : {&saved, &ours}) {
+      (*j)["numerics"].erase("coupling_interval");
+      (*j)["numerics"].erase("node_velocity");
+    }
+  if (saved != ours) {
+    std::string hint;
+    if (saved["numerics"].value("node_velocity", "") != ours["numerics"].value("node_velocity", "")) {
+      nlohmann::json other = saved;
+      other["numerics"].erase("node_velocity");
+      if (ours["numerics"].contains("node_velocity")) other["numerics"]["node_velocity"] = ours["numerics"]["node_velocity"];
+      if (other == ours)
+        hint = " (it was run with numerics.node_velocity \"" + saved["numerics"].value("node_velocity", "") +
+               "\": set that in the case to resume it)";
+    }
+    throw std::runtime_error("checkpoint " + path + " belongs to a different case" + hint);
   }
-  if (saved != ours) throw std::runtime_error("checkpoint " + path + " belongs to a different case");
   // The inside fraction is rebuilt from the positions it was built from before the stop.
   const bool contrast = case_.flow.viscosity_ratio != 1.0;
   if (s.positions.size() != x_.size() || (contrast && s.indicator_positions.size() != x_.size()))
@@ -232,6 +263,15 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
         s.forces[i].size() != x_[i].size() || (contrast && s.indicator_positions[i].size() != x_[i].size()))
       throw std::runtime_error("checkpoint " + path + ": cell " + std::to_string(i) + " has the wrong node count");
   fluid_.restore(s.populations, s.steps);
+  // The velocity summed over the interval so far, when the checkpoint has it for this
+  // lattice; otherwise the mean is taken over the interval's remaining steps.
+  u_field_steps_ = 0;
+  const bool inside_interval = s.steps % case_.coupling_interval != 0;
+  if (inside_interval && case_.node_velocity == NodeVelocity::IntervalMean && s.velocity_sum_steps > 0 &&
+      s.velocity_sum.size() == 3 * FluidLattice::component_stride(fluid_.node_count())) {
+    u_field_ = std::move(s.velocity_sum);
+    u_field_steps_ = static_cast<int>(s.velocity_sum_steps);
+  }
   x_ = std::move(s.positions);
   v_ = std::move(s.velocities);
   f_ = std::move(s.forces);

@@ -106,9 +106,11 @@ class ShearFlowSimulation {
   std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
   std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
   // Fluid velocity at every lattice node (x, y, z components, node_count() each), written
-  // by the fluid step before a membrane update: one evaluation of the moments per node
-  // instead of one per stencil visit.
+  // by the fluid steps before a membrane update: one evaluation of the moments per node
+  // instead of one per stencil visit. Under the interval mean it holds the sum over the
+  // u_field_steps_ fluid steps of the interval so far.
   std::vector<double> u_field_;
+  int u_field_steps_ = 0;
   StepTimings timings_;
   NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
 };

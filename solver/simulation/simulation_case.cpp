@@ -18,6 +18,7 @@ TriangleMesh reference_cell(const SimulationCase& c, double radius) {
 
 std::string to_string(CellShape s) { return s == CellShape::Sphere ? "sphere" : "biconcave"; }
 std::string to_string(Integrator i) { return i == Integrator::Euler ? "euler" : "rk4"; }
+std::string to_string(NodeVelocity v) { return v == NodeVelocity::IntervalMean ? "interval_mean" : "last_step"; }
 
 SimulationCase case_from_json(const nlohmann::json& j, const std::string& source) {
   const formats::FieldReader r(j, source);
@@ -88,6 +89,10 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   c.integrator = integrator == "euler" ? Integrator::Euler : Integrator::RK4;
   c.indicator_tolerance = r.number_or("numerics.indicator_tolerance", c.indicator_tolerance, 0.0, 1.0);
   c.coupling_interval = r.integer_or("numerics.coupling_interval", c.coupling_interval, 1, 1000);
+  const std::string node_velocity = r.text_or("numerics.node_velocity", to_string(c.node_velocity));
+  if (node_velocity != "interval_mean" && node_velocity != "last_step")
+    r.fail("numerics.node_velocity", "must be \"interval_mean\" or \"last_step\"");
+  c.node_velocity = node_velocity == "interval_mean" ? NodeVelocity::IntervalMean : NodeVelocity::LastStep;
   c.volume_stiffness = r.number_or("numerics.volume_stiffness", c.volume_stiffness, 0.0, 1e9);
   c.seed = static_cast<std::uint64_t>(r.number_or("numerics.seed", 1.0, 0.0, 9.0e15));
 
@@ -137,6 +142,9 @@ nlohmann::json case_to_json(const SimulationCase& c) {
                    {"coupling_interval", c.coupling_interval},
                    {"volume_stiffness", c.volume_stiffness},
                    {"seed", c.seed}};
+  // With one fluid step per membrane step both node velocities are the same: the field is
+  // written only where it matters (so k = 1 cases read the same before and after it existed).
+  if (c.coupling_interval > 1) j["numerics"]["node_velocity"] = to_string(c.node_velocity);
   j["run"] = {{"strain_end", c.strain_end},
               {"window", c.window},
               {"record_interval", c.record_interval},

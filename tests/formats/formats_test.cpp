@@ -160,6 +160,21 @@ TEST(NumericsSignature, AbsentFieldsMeanWhatTheyMeantWhenWritten) {
   EXPECT_EQ(error_of([&] { numerics_signature(no_kernel, "k.json"); }), "k.json: field numerics.kernel: missing");
 }
 
+// Before numerics.node_velocity existed an interval moved the membrane by its last step's
+// velocity; at one fluid step per membrane step the field means nothing and compares as null.
+TEST(NumericsSignature, NodeVelocityCountsOnlyForAnIntervalAboveOne) {
+  json one = library_case(0.1), two = library_case(0.1);
+  two["numerics"]["coupling_interval"] = 2;
+  EXPECT_EQ(numerics_signature(one, "one.json")["numerics.node_velocity"], nullptr);
+  EXPECT_EQ(numerics_signature(two, "two.json")["numerics.node_velocity"], "last_step");
+  json one_mean = one, two_mean = two;
+  one_mean["numerics"]["node_velocity"] = "interval_mean";
+  two_mean["numerics"]["node_velocity"] = "interval_mean";
+  EXPECT_FALSE(first_signature_difference(numerics_signature(one, "a.json"), numerics_signature(one_mean, "b.json")));
+  EXPECT_EQ(first_signature_difference(numerics_signature(two, "a.json"), numerics_signature(two_mean, "b.json")),
+            "numerics.node_velocity");
+}
+
 TEST(LibraryLayout, CaseIdsAndPaths) {
   EXPECT_EQ(case_id(0.21, 0.1, 5.0), "phi0.21_Ca0.1_lambda5");
   EXPECT_EQ(library_layout::case_result("LIB", "x"), std::filesystem::path("LIB/cases/x.json"));

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "solver/coupling/immersed_boundary.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "../scratch_path.hpp"
 
@@ -84,12 +85,79 @@ TEST_P(CheckpointAtIndicatorTolerance, RestartContinuesBitIdentically) {
 }
 
 // With numerics.coupling_interval 3 the checkpoint at step 20 falls inside an interval,
-// whose force field the restore must rebuild from the saved positions and forces.
-TEST(CheckpointInsideACouplingInterval, RestartContinuesBitIdentically) {
+// whose force field the restore must rebuild from the saved positions and forces, and
+// (under the interval mean) whose velocity summed over its first two steps it must keep.
+class CheckpointInsideACouplingInterval : public ::testing::TestWithParam<NodeVelocity> {};
+
+TEST_P(CheckpointInsideACouplingInterval, RestartContinuesBitIdentically) {
   SimulationCase c = tiny_case();
   c.coupling_interval = 3;
+  c.node_velocity = GetParam();
   expect_restart_bit_identical(c);
 }
+
+std::string node_velocity_name(const ::testing::TestParamInfo<NodeVelocity>& info) {
+  return info.param == NodeVelocity::IntervalMean ? "IntervalMean" : "LastStep";
+}
+
+INSTANTIATE_TEST_SUITE_P(BothNodeVelocities, CheckpointInsideACouplingInterval,
+                         ::testing::Values(NodeVelocity::IntervalMean, NodeVelocity::LastStep), node_velocity_name);
+
+// A checkpoint of the other node velocity is refused, and the message says how to resume.
+TEST(CheckpointInsideACouplingInterval, RefusesTheOtherNodeVelocityNamingTheField) {
+  const std::string path = rbcal::testing_support::scratch_path("node_velocity.bin").string();
+  SimulationCase c = tiny_case();
+  c.coupling_interval = 2;
+  c.node_velocity = NodeVelocity::LastStep;
+  {
+    ShearFlowSimulation sim(c);
+    for (int s = 0; s < 4; ++s) sim.step();
+    sim.save_checkpoint(path);
+  }
+  c.node_velocity = NodeVelocity::IntervalMean;
+  ShearFlowSimulation other(c);
+  try {
+    other.restore_checkpoint(path);
+    ADD_FAILURE() << "restored a checkpoint of the other node velocity";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("numerics.node_velocity \"last_step\""), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+// Under the interval mean the membrane moves by the mean of the velocities interpolated
+// after each fluid step of the interval (at the positions of its start); under the last
+// step's, by the velocity after the last one. Reference: the fluid's own moments.
+class IntervalVelocity : public ::testing::TestWithParam<NodeVelocity> {};
+
+TEST_P(IntervalVelocity, IsTheMeanOrTheLastOfTheStepsVelocities) {
+  SimulationCase c = tiny_case();
+  c.coupling_interval = 3;
+  c.node_velocity = GetParam();
+  ShearFlowSimulation sim(c);
+  for (int s = 0; s < 6; ++s) sim.step();  // two intervals: the cell is moving
+  const std::vector<Vec3> start = sim.positions()[0];
+  std::vector<std::vector<Vec3>> per_step;
+  for (int s = 0; s < 3; ++s) {
+    sim.step();
+    std::vector<Vec3> u;
+    for (const Vec3& x : start) u.push_back(interpolate_velocity(c.kernel, sim.fluid(), x));
+    per_step.push_back(u);
+  }
+  double largest_gap = 0.0, scale = 0.0;  // between the mean and the last step's velocity
+  for (std::size_t n = 0; n < start.size(); ++n) {
+    const Vec3 mean = (per_step[0][n] + per_step[1][n] + per_step[2][n]) / 3.0;
+    const Vec3 expected = GetParam() == NodeVelocity::IntervalMean ? mean : per_step[2][n];
+    EXPECT_LT((sim.velocities()[0][n] - expected).norm(), 1e-12 * (1.0 + expected.norm())) << "node " << n;
+    largest_gap = std::max(largest_gap, (mean - per_step[2][n]).norm());
+    scale = std::max(scale, mean.norm());
+  }
+  // The two schemes differ here by far more than the tolerance above.
+  EXPECT_GT(largest_gap, 1e-6 * scale);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothNodeVelocities, IntervalVelocity,
+                         ::testing::Values(NodeVelocity::IntervalMean, NodeVelocity::LastStep), node_velocity_name);
 
 // The membrane moves only at the end of each interval, by k times the interpolated velocity.
 TEST(CouplingInterval, MovesTheMembraneEveryKStepsByKTimesItsVelocity) {
