@@ -12,10 +12,16 @@ interval 2 (shown equivalent to 1 on two dense cases), gamma_dot t to 40 with th
 exceed 0.05 min(1, (1 + lambda) / 2) (the stability cap of the v1 library,
 docs/library.md "Time-step limit").
 
+The gap tier (n8_h16, from the fifth session of 2026-11-24): every point at phi >=
+ROUND2_PHI again at N_a 8 in a 16a gap (box 6a x 16a x 6a), where the 8a box's layers
+do not set eta_re (docs/library.md, "Dense states in the 8a box are layered"), with the
+membrane moved by the interval's mean velocity (numerics.node_velocity, docs/performance.md).
+
 Usage: python3 scripts/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
-writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json and OUT_DIR/n8/ID.json, and the same design
-as sweep plans OUT_DIR/plan_n6.json and plan_n8.json (listed points) for `rbcal library
-generate` on a larger machine. The plans cap Re exactly (max_shear_modulus_lattice 0.025
+writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json, OUT_DIR/n8/ID.json and
+OUT_DIR/n8_h16/ID.json, and the same design as sweep plans OUT_DIR/plan_n6.json,
+plan_n8.json and plan_n8_h16.json (listed points) for `rbcal library generate` on a
+larger machine. The plans cap Re exactly (max_shear_modulus_lattice 0.025
 = 0.05 / coupling interval); the case files carry Re rounded to 4 digits (a relative
 difference below 5e-4).
 """
@@ -84,20 +90,27 @@ def greedy_subset(points, k, start):
     return chosen
 
 
-def case_file(phi, ca, lam, n_a):
+def case_file(phi, ca, lam, n_a, gap=8.0):
     nu = (1.0 - 0.5) / 3.0
     modulus = RE * nu * nu / (n_a * ca)  # G_s in lattice units at Re 0.2
     cap = CAP * min(1.0, 0.5 * (1.0 + lam)) / COUPLING_INTERVAL
     re = RE if modulus <= cap else float(f"{RE * cap / modulus:.4g}")
-    return {
+    case = {
         "schema": "rbcal.case/1",
         "params": {"phi": phi, "Ca": ca, "lambda": lam, "kb_hat": 0.0078},
         "cells": {"shape": "biconcave", "profile": "evans-fung", "triangles": 1280, "law": "skalak", "skalak_c": 10.0},
-        "numerics": {"N_a": n_a, "tau_out": 1.0, "box": [6.0, 8.0, 6.0], "Re": re, "kernel": "peskin4",
+        "numerics": {"N_a": n_a, "tau_out": 1.0, "box": [6.0, gap, 6.0], "Re": re, "kernel": "peskin4",
                      "integrator": "euler", "indicator_tolerance": 0.1, "coupling_interval": COUPLING_INTERVAL,
                      "seed": 1},
         "run": {"strain_end": 40.0, "window": [15.0, 40.0], "record_interval": 0.05, "checkpoint_interval": 1.0},
     }
+    if gap != 8.0:  # the gap tier, run after the interval mean existed
+        case["numerics"]["node_velocity"] = "interval_mean"
+    return case
+
+
+# Tiers: folder, N_a, gap in a.
+TIERS = (("n6", 6, 8.0), ("n8", 8, 8.0), ("n8_h16", 8, 16.0))
 
 
 def case_id(phi, ca, lam):
@@ -116,7 +129,11 @@ def main():
     # each in maximin order so that an unfinished library is still spread out.
     order = greedy_subset(unit, len(unit), [0])
     order = [i for i in order if i in subset] + [i for i in order if i not in subset]
-    for tier in ("n6", "n8"):
+    dense = {i for i in range(len(unit)) if unit_to_params(unit[i])[0] >= ROUND2_PHI}
+    chosen_of = {"n6": order, "n8": [i for i in order if i in subset | round2],
+                 # nearest phi 0.41 first (the acceptance point's neighbourhood)
+                 "n8_h16": sorted((i for i in order if i in dense), key=lambda i: abs(unit_to_params(unit[i])[0] - 0.41))}
+    for tier, _, _ in TIERS:
         os.makedirs(os.path.join(out, tier), exist_ok=True)
     with open(os.path.join(out, "design.csv"), "w") as design:
         design.write("# v2 library design (scripts/design_library_v2.py): run order, parameters, N_a 8 tier"
@@ -125,26 +142,29 @@ def main():
         for rank, i in enumerate(order):
             phi, ca, lam = unit_to_params(unit[i])
             design.write(f"{rank},{phi:g},{ca:g},{lam:g},{int(i in subset) + 2 * int(i in round2)}\n")
-            for tier, n_a in (("n6", 6), ("n8", 8)):
-                if tier == "n8" and i not in subset | round2:
+            for tier, n_a, gap in TIERS:
+                if i not in chosen_of[tier]:
                     continue
                 with open(os.path.join(out, tier, case_id(phi, ca, lam) + ".json"), "w") as f:
-                    json.dump(case_file(phi, ca, lam, n_a), f, indent=1)
+                    json.dump(case_file(phi, ca, lam, n_a, gap), f, indent=1)
                     f.write("\n")
-    for tier, n_a, chosen in (("n6", 6, order), ("n8", 8, [i for i in order if i in subset | round2])):
-        base = case_file(0.1, 1.0, 1.0, n_a)
+    for tier, n_a, gap in TIERS:
+        chosen = chosen_of[tier]
+        base = case_file(0.1, 1.0, 1.0, n_a, gap)
         del base["params"]["phi"], base["params"]["Ca"], base["params"]["lambda"]
         base["numerics"]["Re"] = RE
         del base["schema"]
         plan = {"schema": "rbcal.plan/1",
-                "description": f"Library v2 at N_a {n_a} (issue 16): scripts/design_library_v2.py, docs/library.md",
+                "description": f"Library v2 at N_a {n_a}{'' if gap == 8.0 else f' in a {gap:g}a gap'} (issue 16):"
+                               " scripts/design_library_v2.py, docs/library.md",
                 "points": [list(unit_to_params(unit[i])) for i in chosen],
                 "max_shear_modulus_lattice": CAP / COUPLING_INTERVAL,
                 "base": base}
         with open(os.path.join(out, f"plan_{tier}.json"), "w") as f:
             json.dump(plan, f, indent=1)
             f.write("\n")
-    print(f"{len(unit)} points, {len(subset)} also at N_a 8 (+ {len(round2)} in round 2), in {out}")
+    print(f"{len(unit)} points, {len(subset)} also at N_a 8 (+ {len(round2)} in round 2),"
+          f" {len(dense)} in the 16a gap at N_a 8, in {out}")
 
 
 if __name__ == "__main__":

@@ -32,6 +32,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   every_field.target_phi = 0.1;
   every_field.cells.push_back({});
   every_field.skalak_c_per_ca = 1.0;
+  every_field.coupling_interval = 2;  // so that node_velocity is written
   const nlohmann::json known = case_to_json(every_field);
   for (const char* section : {"params", "cells", "numerics", "run"}) {
     std::vector<std::string> keys;

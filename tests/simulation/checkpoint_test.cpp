@@ -125,6 +125,27 @@ TEST(CheckpointInsideACouplingInterval, RefusesTheOtherNodeVelocityNamingTheFiel
   std::filesystem::remove(path);
 }
 
+// numerics.node_velocity: written (and allowed) where the interval is above 1, read back,
+// and a bad value is named with its file and field.
+TEST(IntervalVelocity, ReadWrittenBackAndChecked) {
+  SimulationCase c = tiny_case();
+  EXPECT_FALSE(case_to_json(c)["numerics"].contains("node_velocity"));  // k = 1: no meaning
+  c.coupling_interval = 2;
+  c.node_velocity = NodeVelocity::LastStep;
+  nlohmann::json j = case_to_json(c);
+  EXPECT_EQ(j["numerics"]["node_velocity"], "last_step");
+  EXPECT_EQ(case_from_json(j, "k2.json").node_velocity, NodeVelocity::LastStep);
+  j["numerics"].erase("node_velocity");
+  EXPECT_EQ(case_from_json(j, "k2.json").node_velocity, NodeVelocity::IntervalMean);  // the default
+  j["numerics"]["node_velocity"] = "mean";
+  try {
+    case_from_json(j, "k2.json");
+    ADD_FAILURE() << "accepted node_velocity \"mean\"";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("k2.json: field numerics.node_velocity"), std::string::npos) << e.what();
+  }
+}
+
 // Under the interval mean the membrane moves by the mean of the velocities interpolated
 // after each fluid step of the interval (at the positions of its start); under the last
 // step's, by the velocity after the last one. Reference: the fluid's own moments.

@@ -2,6 +2,8 @@
 // of the low-Ca cases only, to exactly the cap (scaled down for lambda < 1).
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -94,11 +96,13 @@ TEST(SweepPlan, AListedPlanMakesOneCasePerPointInItsOrder) {
 // make the shipped v2 case files that the background runs use: same points, same numerics,
 // Re equal up to the case files' rounding to 4 digits.
 TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {
-  for (const std::string tier : {"n6", "n8"}) {
+  // N_a 8: the 20 of the maximin subset and the 14 of round 2 (every point at phi >= 0.38);
+  // the 16a gap: all 22 points at phi >= 0.38.
+  const std::map<std::string, std::size_t> cases_in = {{"n6", 60}, {"n8", 34}, {"n8_h16", 22}};
+  for (const auto& [tier, count] : cases_in) {
     const std::string dir = std::string(RBCAL_CASES_DIR) + "/library_v2/";
     const SweepPlan plan = read_sweep_plan(dir + "plan_" + tier + ".json");
-    // N_a 8: the 20 of the maximin subset and the 14 of round 2 (every point at phi >= 0.38).
-    EXPECT_EQ(plan.cases.size(), tier == "n6" ? 60u : 34u);
+    EXPECT_EQ(plan.cases.size(), count) << tier;
     for (const PlannedCase& c : plan.cases) {
       const SimulationCase file = read_case(dir + tier + "/" + c.id + ".json");
       EXPECT_EQ(file.flow.capillary_number, c.spec.flow.capillary_number) << c.id;
@@ -106,6 +110,8 @@ TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {
       EXPECT_EQ(file.target_phi, c.spec.target_phi) << c.id;
       EXPECT_EQ(file.resolution.nodes_per_radius, c.spec.resolution.nodes_per_radius) << c.id;
       EXPECT_EQ(file.coupling_interval, c.spec.coupling_interval) << c.id;
+      EXPECT_EQ(file.node_velocity, c.spec.node_velocity) << c.id;
+      EXPECT_EQ(file.resolution.box_in_radii, c.spec.resolution.box_in_radii) << c.id;
       EXPECT_EQ(file.window, c.spec.window) << c.id;
       EXPECT_NEAR(file.flow.reynolds_number / c.spec.flow.reynolds_number, 1.0, 5e-4) << c.id;
     }
