@@ -160,7 +160,14 @@ void ShearFlowSimulation::move_cells(double dt) {
   // fraction (whose scan-line grid follows their bounding boxes: a blow-up caught only
   // at the next recorded row once grew past 7 GB).
   const double mach = std::sqrt(3.0 * fastest);
-  if (!(mach < kMaxNodeMach)) throw std::runtime_error(node_mach_exceeded(mach));
+  if (!(mach < kMaxNodeMach)) {
+    std::string hint;
+    if (case_.coupling_interval > 1)
+      hint = "; numerics.coupling_interval " + std::to_string(case_.coupling_interval) +
+             " lowers the stiffness the coupling can take that many times: run it at 1 (rbcal simulate --resume"
+             " --coupling-interval 1) or at a lower Re";
+    throw std::runtime_error(node_mach_exceeded(mach) + hint);
+  }
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t i = 0; i < x_.size(); ++i) {
     Vec3* const x = x_[i].data();  // raw pointers: the vectors' data are not reloaded per node
