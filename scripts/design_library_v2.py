@@ -124,12 +124,12 @@ def main():
     lhs = maximin_lhs(LHS_POINTS, corners, rng)
     unit = corners + lhs
     subset = set(greedy_subset(unit, SUBSET, range(len(corners))))
-    round2 = {i for i in range(len(unit)) if i not in subset and unit_to_params(unit[i])[0] >= ROUND2_PHI}
+    dense = {i for i in range(len(unit)) if unit_to_params(unit[i])[0] >= ROUND2_PHI}
+    round2 = dense - subset
     # Run order: the N_a 8 subset first (the extrapolation needs both tiers), then the rest,
     # each in maximin order so that an unfinished library is still spread out.
     order = greedy_subset(unit, len(unit), [0])
     order = [i for i in order if i in subset] + [i for i in order if i not in subset]
-    dense = {i for i in range(len(unit)) if unit_to_params(unit[i])[0] >= ROUND2_PHI}
     chosen_of = {"n6": order, "n8": [i for i in order if i in subset | round2],
                  # nearest phi 0.41 first (the acceptance point's neighbourhood)
                  "n8_h16": sorted((i for i in order if i in dense), key=lambda i: abs(unit_to_params(unit[i])[0] - 0.41))}

@@ -228,8 +228,9 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   s.velocities = v_;
   s.forces = f_;
   s.indicator_positions = x_indicator_;
-  // Inside an interval the velocity summed so far is part of the state.
-  if (fluid_.steps_done() % case_.coupling_interval != 0 && u_field_steps_ > 0) {
+  // Inside an interval the velocity summed so far is part of the state (a sum is held only
+  // there: the membrane update that ends an interval resets it).
+  if (u_field_steps_ > 0) {
     s.velocity_sum = u_field_;
     s.velocity_sum_steps = u_field_steps_;
   }
@@ -250,15 +251,16 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
       (*j)["numerics"].erase("node_velocity");
     }
   if (saved != ours) {
-    std::string hint;
-    if (saved["numerics"].value("node_velocity", "") != ours["numerics"].value("node_velocity", "")) {
-      nlohmann::json other = saved;
-      other["numerics"].erase("node_velocity");
-      if (ours["numerics"].contains("node_velocity")) other["numerics"]["node_velocity"] = ours["numerics"]["node_velocity"];
-      if (other == ours)
-        hint = " (it was run with numerics.node_velocity \"" + saved["numerics"].value("node_velocity", "") +
-               "\": set that in the case to resume it)";
-    }
+    // Where the node velocity is all that differs, say which one the checkpoint needs.
+    auto without_node_velocity = [](nlohmann::json j) {
+      j["numerics"].erase("node_velocity");
+      return j;
+    };
+    const std::string hint =
+        without_node_velocity(saved) == without_node_velocity(ours)
+            ? " (it was run with numerics.node_velocity \"" + saved["numerics"].value("node_velocity", "") +
+                  "\": set that in the case to resume it)"
+            : "";
     throw std::runtime_error("checkpoint " + path + " belongs to a different case" + hint);
   }
   // The inside fraction is rebuilt from the positions it was built from before the stop.
