@@ -17,5 +17,7 @@ void add_library_inspect_commands(CLI::App& library);
 void add_library_generate_command(CLI::App& library);
 // `extrapolate` under the `library` sub-command.
 void add_library_extrapolate_command(CLI::App& library);
+// `effective-phi` under the `library` sub-command.
+void add_library_effective_phi_command(CLI::App& library);
 
 }  // namespace rbcal::cli

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/scatter_floor_options.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 #include "surrogate/resolution_extrapolation.hpp"
@@ -19,7 +20,7 @@ namespace {
 struct ExtrapolateOptions {
   std::string coarse, fine, output;
   surrogate::ExtrapolationOptions extrapolation;
-  std::vector<double> scatter_phi;  // --scatter-phi LOW,HIGH
+  ScatterFloorOptions scatter_phi;
 };
 
 void run_extrapolate(const ExtrapolateOptions& o) {
@@ -67,21 +68,9 @@ void add_library_extrapolate_command(CLI::App& library) {
                   "Other plausible order: half the difference of the two extrapolations enters the sd")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--scatter-floor", o->extrapolation.scatter_floor,
-                  "Relative sd added in quadrature to each dense run's error (seed scatter of its window mean)")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--scatter-phi", o->scatter_phi,
-                  "phi where the scatter floor starts and where it reaches its full value")
-      ->delimiter(',')
-      ->expected(2);
+  add_scatter_floor_options(cmd, o->extrapolation, o->scatter_phi);
   cmd->callback([o] {
-    if (o->scatter_phi.size() == 2) {
-      if (!(o->scatter_phi[0] <= o->scatter_phi[1]))
-        throw CLI::ValidationError("--scatter-phi", "give LOW,HIGH with LOW <= HIGH");
-      o->extrapolation.scatter_phi_low = o->scatter_phi[0];
-      o->extrapolation.scatter_phi_high = o->scatter_phi[1];
-    }
+    apply_scatter_phi(o->scatter_phi, o->extrapolation);
     run_extrapolate(*o);
   });
 }

@@ -49,6 +49,8 @@ nlohmann::json numerics_signature(const nlohmann::json& case_file, const std::st
     signature[f.path] = node ? *node : *f.absent;
   }
   if (signature["numerics.coupling_interval"] == 1) signature["numerics.node_velocity"] = nullptr;
+  if (const nlohmann::json* method = r.find("extrapolation.method"); method && *method == kEffectiveVolumeFraction)
+    signature["numerics.N_a"] = kEffectiveVolumeFraction;
   return signature;
 }
 

@@ -24,6 +24,11 @@ inline constexpr const char* kSurrogateSchema = "rbcal.surrogate/1";
 inline constexpr const char* kProposalSchema = "rbcal.proposal/1";
 inline constexpr const char* kCalibrationReportSchema = "rbcal.calibration_report/1";
 
+// extrapolation.method of a case moved to its effective volume fraction
+// (surrogate/effective_volume_fraction.hpp). Such cases stand for the continuum, so a
+// library may mix their resolutions: their signature shows this name in place of N_a.
+inline constexpr const char* kEffectiveVolumeFraction = "effective volume fraction";
+
 namespace library_layout {
 inline std::filesystem::path plan(const std::filesystem::path& lib) { return lib / "plan.json"; }
 inline std::filesystem::path cases(const std::filesystem::path& lib) { return lib / "cases"; }

@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
 # The v2 library from its background runs, in one go (issue 16; docs/library.md):
 #   1. gather the finished runs into data/library/v2/n6 and n8 (scripts/collect-library.sh);
-#   2. extrapolate to the continuum into data/library/default, the shipped default library
-#      (rbcal library extrapolate,
-#      order 2.8 and P_LOW (--order-low) 1.5 by default: docs/library.md, orders measured at
-#      phi 0.05, 0.21 and 0.55, and the (6, 8) estimates against the finer runs,
-#      scripts/extrapolation_check.py);
+#   2. map them to the continuum into data/library/default, the shipped default library:
+#      METHOD=effective-phi (the default since 2026-11-25): every run of both tiers moved
+#      to the volume fraction its cells fill when thickened by OFFSET (0.75) +- OFFSET_SD
+#      (0.15) lattice spacings (rbcal library effective-phi; docs/library.md, "The
+#      effective volume fraction"); runs beyond phi_eff 0.62 are left out;
+#      METHOD=richardson (the default until then): Richardson extrapolation of the (6, 8)
+#      pairs (rbcal library extrapolate, order 2.8 and P_LOW (--order-low) 1.5);
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
+# Under METHOD=richardson:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the extrapolation, and
 #   N8_USE_FILE=FILE uses only the N_a 8 cases FILE lists (one ID per line, # comments);
-#   either way all cases stay in data/library/v2/n8. The shipped default is reproduced by
-#   N8_USE_FILE=data/library/v2/default_n8_cases.txt (15 of the maximin subset; that file
-#   says why the others are left out; docs/library.md, "Round 2 and the layers").
+#   either way all cases stay in data/library/v2/n8. The default of 2026-11-24 is
+#   reproduced by METHOD=richardson N8_USE_FILE=data/library/v2/default_n8_cases.txt (15 of
+#   the maximin subset; that file says why the others are left out; docs/library.md,
+#   "Round 2 and the layers").
 # It rewrites data/library/default/cases and surrogate.json (the default since 2026-11-24);
 # review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail
@@ -57,9 +61,14 @@ mkdir -p "$out"
 # report, trend check), the record that docs/library.md quotes.
 exec > >(tee "$out/build_report.txt") 2>&1
 echo "rbcal $(git rev-parse --short HEAD)$(git diff --quiet || echo -dirty), $(date -u +%F)"
-[ -n "${N8_LEAVE_OUT:-}" ] && echo "N_a 8 cases left out: $N8_LEAVE_OUT"
-[ -n "${N8_USE_FILE:-}" ] && echo "N_a 8 cases used: those listed in $N8_USE_FILE"
-"$rbcal" library extrapolate "$lib/n6" "$fine" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
-  --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
+if [ "${METHOD:-effective-phi}" = richardson ]; then
+  [ -n "${N8_LEAVE_OUT:-}" ] && echo "N_a 8 cases left out: $N8_LEAVE_OUT"
+  [ -n "${N8_USE_FILE:-}" ] && echo "N_a 8 cases used: those listed in $N8_USE_FILE"
+  "$rbcal" library extrapolate "$lib/n6" "$fine" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
+    --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
+else
+  "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$out" --offset "${OFFSET:-0.75}" --offset-sd "${OFFSET_SD:-0.15}" \
+    --phi-max "${PHI_MAX:-0.62}" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
+fi
 "$rbcal" surrogate build "$out"
 "$rbcal" surrogate check "$out/surrogate.json" || echo "trend check FAILED (see above)"

@@ -39,6 +39,8 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
       c.raw_results.push_back({static_cast<int>(r.integer(at + ".N_a", 1)), r.positive(at + ".eta_re"),
                                r.non_negative(at + ".eta_re_sem")});
     }
+    if (c.extrapolation_method == formats::kEffectiveVolumeFraction)
+      c.phi_as_run = r.in_range("extrapolation.phi_raw", 0.0, 1.0);
   }
   r.numbers("numerics.box", 3);
   r.positive("numerics.tau_out");

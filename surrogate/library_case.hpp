@@ -39,6 +39,8 @@ struct LibraryCase {
   // ("richardson" or "correction model") and the raw results it came from; empty otherwise.
   std::string extrapolation_method;
   std::vector<ResolutionResult> raw_results;
+  // Cases moved to their effective volume fraction: the phi they were run at (0 otherwise).
+  double phi_as_run = 0.0;
   // The numerics every case of one library must share (formats::numerics_signature).
   nlohmann::json numerics_signature;
 };

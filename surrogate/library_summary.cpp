@@ -156,7 +156,9 @@ std::string format_summary(const LibrarySummary& s, bool values) {
       for (const ResolutionResult& raw : c.raw_results)
         o << "  N_a " << raw.nodes_per_radius << fmt(raw.eta_re, " %7.4g") << fmt(raw.eta_re_sem, " +- %-6.2g");
       if (c.raw_results.size() == 1) o << std::string(25, ' ');
-      o << "  -> " << fmt(c.eta_re, "%7.4g") << fmt(c.eta_re_sem, " +- %-6.2g") << "  " << c.extrapolation_method << "\n";
+      o << "  -> " << fmt(c.eta_re, "%7.4g") << fmt(c.eta_re_sem, " +- %-6.2g") << "  " << c.extrapolation_method;
+      if (c.phi_as_run > 0.0) o << fmt(c.phi_as_run, " (run at phi %.4g)");
+      o << "\n";
     }
   }
   return o.str();

@@ -37,16 +37,23 @@ TEST(ShippedSurrogate, IsRebuiltFromTheShippedLibrary) {
       }
 }
 
-// The physical trends issue 16 asks of the default library (library v2), on the probe grid of
-// `rbcal surrogate check` (phi 0.05-0.55, Ca 0.01-3.2, lambda 0.1-10): eta_re rises with phi
-// everywhere, and falls with Ca at phi 0.41 for every lambda. Elsewhere at phi >= 0.21 a step
-// along Ca may be flat (at phi 0.5 and Ca below 0.06 the v2 surrogate rises by at most 0.01,
-// about 2 % of its sd there: docs/library.md) but must not rise by a resolvable amount.
+// The physical trends issue 16 asks of the default library (library v2 at its effective volume
+// fractions), on the probe grid of `rbcal surrogate check` (phi 0.05-0.55, Ca 0.01-3.2, lambda
+// 0.1-10): eta_re rises with phi everywhere, and falls with Ca at phi 0.41 for every lambda.
+// Elsewhere at phi >= 0.21 a step along Ca may be flat but must not rise by a resolvable
+// amount. At phi 0.41, Ca 0.8, lambda 5 it lies within 25 % of blood at high shear (Pries et
+// al. 1992, surrogate/trend_check.hpp; docs/library.md).
 TEST(ShippedSurrogate, ShowsThePhysicalTrends) {
   const ViscositySurrogate model = load_surrogate(kLibrary / "surrogate.json");
   const TrendCheck check = check_trends(model);
   EXPECT_GT(check.phi_steps, 600);
+  EXPECT_LE(check.phi.back(), 0.55 + 1e-12);
+  EXPECT_GE(check.phi.back(), 0.55 - 1e-12) << "the probe grid must reach phi 0.55";
   EXPECT_TRUE(check.not_rising_with_phi.empty()) << check.report();
+  EXPECT_EQ(check.high_shear_phi, 0.41);
+  EXPECT_EQ(check.high_shear_ca, 0.8);
+  EXPECT_EQ(check.high_shear_lambda, 5.0);
+  EXPECT_TRUE(check.high_shear_ok()) << check.report();
   for (const TrendViolation& v : check.not_falling_with_ca) {
     const double sd = model.predict(v.phi, v.capillary_number, v.viscosity_ratio).sd;
     EXPECT_LT(v.eta_re_next - v.eta_re_here, 0.05 * sd)
