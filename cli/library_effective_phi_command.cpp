@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,7 +35,9 @@ solver::SteinerTerms cell_terms(const surrogate::LibraryCase& c) {
   const nlohmann::json j = formats::read_json_file(c.source);
   const formats::FieldReader r(j, c.source.string());
   solver::SimulationCase cell;
-  cell.shape = r.text("cells.shape") == "sphere" ? solver::CellShape::Sphere : solver::CellShape::Biconcave;
+  const std::string shape = r.text("cells.shape");
+  if (shape != "sphere" && shape != "biconcave") r.fail("cells.shape", "must be \"sphere\" or \"biconcave\"");
+  cell.shape = shape == "sphere" ? solver::CellShape::Sphere : solver::CellShape::Biconcave;
   if (r.find("cells.profile")) cell.profile = solver::biconcave_profile_from_string(r.text("cells.profile"));
   cell.triangles = static_cast<int>(r.integer("cells.triangles", 1));
   return solver::steiner_terms(solver::reference_cell(cell, 1.0));
@@ -46,26 +50,32 @@ void run_effective_phi(const EffectivePhiOptions& o) {
   const solver::SteinerTerms terms = cell_terms(tiers.front().cases.front());
   const auto ratio = [&](double offset) { return solver::thickened_volume_ratio(terms, offset); };
   const surrogate::MappedLibrary mapped = surrogate::map_to_effective_volume_fraction(tiers, ratio, o.mapping);
+  // Two runs of one id at one resolution (the same point in two folders) would overwrite each other.
+  std::set<std::string> ids;
+  for (const auto& c : mapped.cases)
+    if (!ids.insert(surrogate::mapped_case_id(c)).second)
+      throw std::invalid_argument(c.raw.source.string() + ": a second run " + surrogate::mapped_case_id(c) +
+                                  " (the same point at the same N_a in two libraries)");
   const fs::path cases_dir = formats::library_layout::cases(o.output);
   fs::create_directories(cases_dir);
   std::printf("rbcal library effective-phi: %zu runs from %zu librar%s -> %s\n", mapped.cases.size() + mapped.left_out.size(),
               tiers.size(), tiers.size() == 1 ? "y" : "ies", o.output.c_str());
   std::printf("  cell at radius 1: area %.4f, volume %.4f, mean-curvature integral %.4f\n", terms.area, terms.volume,
               terms.mean_curvature_integral);
-  std::printf("  offset %g +- %g lattice spacings; phi_eff = g phi with g:", o.mapping.offset, o.mapping.offset_sd);
+  std::printf("  offset %g +- %g lattice spacings; phi_eff = g phi_actual with g:", o.mapping.offset, o.mapping.offset_sd);
   for (int n : {6, 8, 10, 12, 16}) std::printf(" %.3f (N_a %d)", ratio(o.mapping.offset / n), n);
-  std::printf("\n  %-34s %8s %8s %7s %10s %16s\n", "run", "phi", "phi_eff", "g", "eta_re", "sd");
+  std::printf("\n  %-34s %8s %10s %8s %7s %10s %16s\n", "run", "phi", "phi_actual", "phi_eff", "g", "eta_re", "sd");
   for (const auto& c : mapped.cases) {
     formats::write_json_atomically(cases_dir / (surrogate::mapped_case_id(c) + ".json"),
                                    surrogate::mapped_case_json(c, o.mapping));
     const fs::path series = c.raw.source.parent_path() / (c.raw.id + ".csv");
     if (fs::exists(series))
       fs::copy_file(series, cases_dir / (surrogate::mapped_case_id(c) + ".csv"), fs::copy_options::overwrite_existing);
-    std::printf("  %-34s %8.4g %8.4g %7.4f %10.4g %7.2g (sem %.2g)\n", surrogate::mapped_case_id(c).c_str(), c.raw.phi,
-                c.phi, c.volume_ratio, c.raw.eta_re, c.eta_re_sd, c.raw.eta_re_sem);
+    std::printf("  %-34s %8.4g %10.4g %8.4g %7.4f %10.4g %7.2g (sem %.2g)\n", surrogate::mapped_case_id(c).c_str(),
+                c.raw.phi, c.raw.phi_actual, c.phi_actual, c.volume_ratio, c.raw.eta_re, c.eta_re_sd, c.raw.eta_re_sem);
   }
   for (const auto& c : mapped.left_out)
-    std::printf("  left out (phi_eff above %g): %s at N_a %d\n", o.mapping.phi_max, c.id.c_str(), c.nodes_per_radius);
+    std::printf("  left out (g phi_actual above %g): %s at N_a %d\n", o.mapping.phi_max, c.id.c_str(), c.nodes_per_radius);
   std::printf("wrote %s (build its surrogate with `rbcal surrogate build %s`)\n", cases_dir.string().c_str(),
               o.output.c_str());
 }
@@ -89,9 +99,9 @@ void add_library_effective_phi_command(CLI::App& library) {
   cmd->add_option("--offset-sd", o->mapping.offset_sd, "Its standard deviation (enters each case's sd)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--phi-max", o->mapping.phi_max, "Leave out runs whose effective phi exceeds this")
+  cmd->add_option("--phi-max", o->mapping.phi_max, "Leave out runs whose effective phi (g phi_actual) exceeds this")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(CLI::Range(0.0, 1.0));  // and not 0 or 1 (the mapping says so, naming --phi-max)
   add_scatter_floor_options(cmd, o->mapping.scatter, o->scatter_phi);
   cmd->callback([o] {
     apply_scatter_phi(o->scatter_phi, o->mapping.scatter);

@@ -10,8 +10,8 @@
 #      pairs (rbcal library extrapolate, order 2.8 and P_LOW (--order-low) 1.5);
 #   3. build its surrogate and check its trends (rbcal surrogate build / check).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
-# Under METHOD=richardson:
-#   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the extrapolation, and
+# Under either method:
+#   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
 #   N8_USE_FILE=FILE uses only the N_a 8 cases FILE lists (one ID per line, # comments);
 #   either way all cases stay in data/library/v2/n8. The default of 2026-11-24 is
 #   reproduced by METHOD=richardson N8_USE_FILE=data/library/v2/default_n8_cases.txt (15 of
@@ -48,7 +48,7 @@ if [ -n "${N8_LEAVE_OUT:-}" ] || [ -n "${N8_USE_FILE:-}" ]; then
 fi
 n8=$(count "$fine/cases")
 echo "v2: $n6 case(s) at N_a 6, $n8 at N_a 8"
-if [ "$n8" -lt 3 ]; then
+if [ "${METHOD:-effective-phi}" = richardson ] && [ "$n8" -lt 3 ]; then
   echo "fewer than 3 cases at N_a 8: no extrapolation yet"
   exit 0
 fi
@@ -61,9 +61,9 @@ mkdir -p "$out"
 # report, trend check), the record that docs/library.md quotes.
 exec > >(tee "$out/build_report.txt") 2>&1
 echo "rbcal $(git rev-parse --short HEAD)$(git diff --quiet || echo -dirty), $(date -u +%F)"
+[ -n "${N8_LEAVE_OUT:-}" ] && echo "N_a 8 cases left out: $N8_LEAVE_OUT"
+[ -n "${N8_USE_FILE:-}" ] && echo "N_a 8 cases used: those listed in $N8_USE_FILE"
 if [ "${METHOD:-effective-phi}" = richardson ]; then
-  [ -n "${N8_LEAVE_OUT:-}" ] && echo "N_a 8 cases left out: $N8_LEAVE_OUT"
-  [ -n "${N8_USE_FILE:-}" ] && echo "N_a 8 cases used: those listed in $N8_USE_FILE"
   "$rbcal" library extrapolate "$lib/n6" "$fine" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
     --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
 else

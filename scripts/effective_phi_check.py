@@ -13,6 +13,7 @@ fraction"; issue 16, item 2), for each offset c in lattice spacings:
    (N_a 10 and 12, data/cases/resolution_v2/results, not in the library) at phi g(N_a).
 3. That surrogate's leave-one-out errors and its value at phi 0.41, Ca 0.8, lambda 5.
 """
+import json
 import math
 import os
 import re
@@ -39,8 +40,9 @@ def run(args):
 
 
 def effective_phi(rbcal, tiers, out, offset):
+    # At offset 0 (the runs as they are) no offset uncertainty widens the sds.
     text = run([rbcal, "library", "effective-phi", *tiers, "-o", out, "--offset", str(offset),
-                "--scatter-floor", "0.054", "--scatter-phi", "0.05,0.41"])
+                "--offset-sd", "0.15" if offset > 0 else "0", "--scatter-floor", "0.054", "--scatter-phi", "0.05,0.41"])
     m = re.search(r"area ([0-9.]+), volume ([0-9.]+), mean-curvature integral ([0-9.]+)", text)
     area, volume, curvature = (float(x) for x in m.groups())
     run([rbcal, "surrogate", "build", out])
@@ -54,7 +56,6 @@ def predict(rbcal, surrogate, phi, ca, lam):
 
 
 def mapped_cases(folder):
-    import json
     out = []
     for name in sorted(os.listdir(os.path.join(folder, "cases"))):
         if name.endswith(".json"):
@@ -103,9 +104,12 @@ def main():
             for phi, ca, lam, (start, end), stems in FINER:
                 for n, stem in sorted(stems.items()):
                     mean, sem = window_mean(os.path.join(RESULTS, stem + ".series.csv"), start, end)
-                    m, s = predict(rbcal, surrogate, phi * g(n), ca, lam)
+                    # The surrogate's input is g phi_actual (the volume fraction the run seeded).
+                    with open(os.path.join(RESULTS, stem + ".result.json")) as f:
+                        phi_actual = json.load(f)["result"]["phi_actual"]
+                    m, s = predict(rbcal, surrogate, phi_actual * g(n), ca, lam)
                     print(f"  finer run phi {phi:g}, Ca {ca:g}, lambda {lam:g}, N_a {n} [{start:g}, {end:g}]: "
-                          f"{mean:.4f} +- {sem:.4f}; predicted at phi_eff {phi * g(n):.3f}: {m:.4f} +- {s:.4f}")
+                          f"{mean:.4f} +- {sem:.4f}; predicted at phi_eff {phi_actual * g(n):.3f}: {m:.4f} +- {s:.4f}")
             loo = run([rbcal, "surrogate", "build", both]).strip().splitlines()[-1].strip()
             m, s = predict(rbcal, surrogate, 0.41, 0.8, 5.0)
             print(f"  both tiers: {loo}\n  phi 0.41, Ca 0.8, lambda 5: {m:.3f} +- {s:.3f}")

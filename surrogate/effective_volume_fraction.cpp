@@ -22,15 +22,21 @@ MappedLibrary map_to_effective_volume_fraction(const std::vector<SimulationLibra
                                                const EffectiveVolumeFractionOptions& options) {
   if (!(options.offset >= 0.0 && options.offset_sd >= 0.0))
     throw std::invalid_argument("the offset and its sd must not be negative");
-  if (!(options.phi_max > 0.0 && options.phi_max < 1.0)) throw std::invalid_argument("phi_max must lie in (0, 1)");
+  if (!(options.phi_max > 0.0 && options.phi_max < 1.0))
+    throw std::invalid_argument("phi_max (--phi-max) must lie strictly between 0 and 1");
   MappedLibrary out;
   const LibraryCase* first = nullptr;
   for (const SimulationLibrary& tier : tiers)
     for (const LibraryCase& c : tier.cases) {
       if (!first) first = &c;
+      if (!c.extrapolation_method.empty())
+        throw std::invalid_argument(c.source.string() + ": already " + c.extrapolation_method +
+                                    " (extrapolation.method): give the runs as simulated");
       if (const auto field = formats::first_signature_difference(without_resolution(first->numerics_signature),
                                                                  without_resolution(c.numerics_signature)))
-        throw std::invalid_argument(c.source.string() + ": field " + *field + " differs from " +
+        throw std::invalid_argument(c.source.string() + ": field " + *field + " is " +
+                                    c.numerics_signature.value(*field, nlohmann::json()).dump() + ", " +
+                                    first->numerics_signature.value(*field, nlohmann::json()).dump() + " in " +
                                     first->source.string() + " (runs may differ in N_a only)");
       const double h = 1.0 / c.nodes_per_radius;  // a lattice spacing in cell radii
       MappedCase m;

@@ -31,7 +31,7 @@ struct EffectiveVolumeFractionOptions {
   // each other) (docs/library.md).
   double offset = 0.75;
   double offset_sd = 0.15;
-  // Runs whose phi_eff exceeds this are left out (they stand for no physiological sample).
+  // Runs whose g phi_actual exceeds this are left out (they stand for no physiological sample).
   double phi_max = 0.62;
   // Seed-scatter floor (only these three fields of ExtrapolationOptions are used).
   ExtrapolationOptions scatter;
@@ -45,17 +45,18 @@ struct MappedCase {
   double volume_ratio = 1.0;     // g
   double volume_ratio_sd = 0.0;  // half the spread of g over c +- sd_c
   double phi = 0.0;              // g params.phi
-  double phi_actual = 0.0;       // g result.phi_actual: the surrogate's input
+  double phi_actual = 0.0;       // g result.phi_actual: the surrogate's input, compared with phi_max
   double eta_re_sd = 0.0;        // standard error, scatter floor and the offset's uncertainty
 };
 
 struct MappedLibrary {
   std::vector<MappedCase> cases;
-  std::vector<LibraryCase> left_out;  // phi_eff above phi_max
+  std::vector<LibraryCase> left_out;  // g phi_actual above phi_max
 };
 
 // Throws std::invalid_argument (naming the files) when the tiers' cases differ in anything
-// of the numerics signature but N_a, or when an option is out of range.
+// of the numerics signature but N_a, when a case is already extrapolated or mapped, or when
+// an option is out of range.
 MappedLibrary map_to_effective_volume_fraction(const std::vector<SimulationLibrary>& tiers,
                                                const VolumeRatio& volume_ratio,
                                                const EffectiveVolumeFractionOptions& options = {});

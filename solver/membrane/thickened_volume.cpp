@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace rbcal::solver {
 
@@ -9,6 +10,8 @@ SteinerTerms steiner_terms(const TriangleMesh& mesh) {
   SteinerTerms s;
   s.area = surface_area(mesh.vertices, mesh.triangles);
   s.volume = enclosed_volume(mesh.vertices, mesh.triangles);
+  if (!(s.volume > 0.0))
+    throw std::invalid_argument("steiner_terms: the mesh encloses no positive volume (triangles must face outwards)");
   const std::vector<Vec3>& x = mesh.vertices;
   for (const Hinge& h : build_hinges(mesh)) {
     const auto [n1, n2] = wing_normals(x, h);

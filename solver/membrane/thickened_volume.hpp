@@ -21,7 +21,8 @@ struct SteinerTerms {
   double mean_curvature_integral = 0.0;  // M (a length)
 };
 
-// Throws std::invalid_argument unless the mesh is closed and consistently oriented.
+// Throws std::invalid_argument unless the mesh is closed, consistently oriented and faces
+// outwards (positive volume).
 SteinerTerms steiner_terms(const TriangleMesh& mesh);
 
 // V(delta) / V.

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <utility>
 
 #include "solver/membrane/cell_shapes.hpp"
 #include "solver/membrane/thickened_volume.hpp"
@@ -41,6 +43,12 @@ TEST(ThickenedVolume, IsExactForACube) {
   EXPECT_NEAR(s.mean_curvature_integral, 3 * std::numbers::pi * L, 1e-12);
   const double exact = L * L * L + 6 * L * L * d + 3 * std::numbers::pi * L * d * d + 4.0 / 3.0 * std::numbers::pi * d * d * d;
   EXPECT_NEAR(thickened_volume_ratio(s, d), exact / (L * L * L), 1e-12);
+}
+
+TEST(ThickenedVolume, RefusesAnInwardFacingMesh) {
+  TriangleMesh inside_out = cube(1.0);
+  for (Triangle& t : inside_out.triangles) std::swap(t[1], t[2]);
+  EXPECT_THROW(steiner_terms(inside_out), std::invalid_argument);
 }
 
 TEST(ThickenedVolume, ApproachesTheSpheresCubeOfRadii) {

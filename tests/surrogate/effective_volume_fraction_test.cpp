@@ -34,8 +34,9 @@ void write_tier(const std::filesystem::path& root, int n_a, int count, unsigned 
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < count; ++i) {
     const double phi = 0.03 + 0.32 * u(rng), ca = 0.01 * std::pow(80.0, u(rng)), lambda = 0.5 * std::pow(20.0, u(rng));
-    const double eta = std::exp(known_log_viscosity(g(n_a) * phi, ca, lambda));
-    nlohmann::json j = case_json(phi, ca, lambda, phi, eta, 1e-3 * eta);
+    const double phi_actual = phi * (1.0 + 0.04 * (u(rng) - 0.5));  // seeding misses phi by a little
+    const double eta = std::exp(known_log_viscosity(g(n_a) * phi_actual, ca, lambda));
+    nlohmann::json j = case_json(phi, ca, lambda, phi_actual, eta, 1e-3 * eta);
     j["numerics"]["N_a"] = n_a;
     char id[96];
     std::snprintf(id, sizeof id, "phi%.6g_Ca%.6g_lambda%.6g", phi, ca, lambda);
@@ -57,18 +58,33 @@ TEST(EffectiveVolumeFraction, MovesEachRunToItsThickenedVolumeFraction) {
   const auto root = fresh_temp_folder("evf_move");
   write_tier(root / "n6", 6, 30, 1);
   const SimulationLibrary tier = read_library(root / "n6");
-  const MappedLibrary m = map_to_effective_volume_fraction({tier}, sphere_ratio, options(0.0, 0.5));
+  const MappedLibrary m = map_to_effective_volume_fraction({tier}, sphere_ratio, options(0.0, 0.4));
   ASSERT_EQ(m.cases.size() + m.left_out.size(), tier.cases.size());
   EXPECT_FALSE(m.left_out.empty());
   EXPECT_FALSE(m.cases.empty());
   for (const MappedCase& c : m.cases) {
     EXPECT_NEAR(c.volume_ratio, g(6), 1e-12);
+    EXPECT_NEAR(c.phi, g(6) * c.raw.phi, 1e-12);
     EXPECT_NEAR(c.phi_actual, g(6) * c.raw.phi_actual, 1e-12);
-    EXPECT_LE(c.phi_actual, 0.5);
+    EXPECT_LE(c.phi_actual, 0.4);
     // With no uncertainty in the offset and no scatter floor, the sd is the run's own.
     EXPECT_NEAR(c.eta_re_sd, c.raw.eta_re_sem, 1e-15);
   }
-  for (const LibraryCase& c : m.left_out) EXPECT_GT(g(6) * c.phi_actual, 0.5);
+  for (const LibraryCase& c : m.left_out) EXPECT_GT(g(6) * c.phi_actual, 0.4);
+}
+
+TEST(EffectiveVolumeFraction, CutsOnTheVolumeFractionTheSurrogateSees) {
+  // A run seeded at phi_actual 0.32 for a nominal 0.30: the surrogate's input is g phi_actual,
+  // so phi_max between g 0.30 and g 0.32 leaves it out.
+  const auto root = fresh_temp_folder("evf_cut");
+  std::filesystem::create_directories(root / "n6" / "cases");
+  nlohmann::json j = case_json(0.30, 0.1, 1.0, 0.32, 3.0, 0.01);
+  j["numerics"]["N_a"] = 6;
+  write_text(root / "n6" / "cases" / "phi0.3_Ca0.1_lambda1.json", j.dump());
+  const SimulationLibrary tier = read_library(root / "n6");
+  const double between = 0.31 * g(6);
+  EXPECT_EQ(map_to_effective_volume_fraction({tier}, sphere_ratio, options(0.0, between)).left_out.size(), 1u);
+  EXPECT_EQ(map_to_effective_volume_fraction({tier}, sphere_ratio, options(0.0, 0.33 * g(6))).cases.size(), 1u);
 }
 
 TEST(EffectiveVolumeFraction, TwoResolutionsGiveTheContinuum) {
@@ -77,6 +93,12 @@ TEST(EffectiveVolumeFraction, TwoResolutionsGiveTheContinuum) {
   write_tier(root / "n8", 8, 40, 3);
   const MappedLibrary m = map_to_effective_volume_fraction({read_library(root / "n6"), read_library(root / "n8")},
                                                            sphere_ratio, options(0.0));
+  // The runs as they are (both tiers at their own phi) cannot be one surface: the same
+  // fit on them misses the continuum by far more.
+  std::vector<TrainingCase> as_run;
+  for (const MappedCase& c : m.cases) as_run.push_back(training_case(c.raw));
+  const ViscositySurrogate unmapped = ViscositySurrogate::fit(as_run, "as run");
+  EXPECT_GT(unmapped.predict(0.4, 0.1, 2.0).eta_re / std::exp(known_log_viscosity(0.4, 0.1, 2.0)), 1.15);
   std::vector<TrainingCase> training;
   for (const MappedCase& c : m.cases) {
     TrainingCase t = training_case(c.raw);
@@ -92,8 +114,6 @@ TEST(EffectiveVolumeFraction, TwoResolutionsGiveTheContinuum) {
     const double truth = std::exp(known_log_viscosity(phi, ca, lambda));
     const ViscosityPrediction p = model.predict(phi, ca, lambda);
     EXPECT_NEAR(p.eta_re / truth, 1.0, 0.03) << phi << " " << ca << " " << lambda;
-    // As run, N_a 8 at the same point would be far off: the mapping is what removes it.
-    EXPECT_GT(std::exp(known_log_viscosity(g(8) * phi, ca, lambda)) / truth, 1.1);
   }
 }
 
@@ -130,10 +150,26 @@ TEST(EffectiveVolumeFraction, WrittenCasesFormOneLibraryAcrossResolutions) {
   for (const LibraryCase& c : mapped.cases) {
     EXPECT_EQ(c.extrapolation_method, "effective volume fraction");
     ASSERT_EQ(c.raw_results.size(), 1u);
-    EXPECT_NEAR(c.phi_actual, g(c.raw_results[0].nodes_per_radius) * c.phi_as_run, 1e-9);
+    EXPECT_NEAR(c.phi, g(c.raw_results[0].nodes_per_radius) * c.phi_as_run, 1e-9);
     EXPECT_EQ(c.eta_re, c.raw_results[0].eta_re);
   }
   EXPECT_NE(format_summary(summarise(mapped)).find("(run at phi"), std::string::npos);
+}
+
+TEST(EffectiveVolumeFraction, RefusesCasesAlreadyMapped) {
+  const auto root = fresh_temp_folder("evf_twice");
+  write_tier(root / "n6", 6, 3, 10);
+  const auto o = options(0.1);
+  const MappedLibrary m = map_to_effective_volume_fraction({read_library(root / "n6")}, sphere_ratio, o);
+  std::filesystem::create_directories(root / "mapped" / "cases");
+  for (const MappedCase& c : m.cases)
+    write_text(root / "mapped" / "cases" / (mapped_case_id(c) + ".json"), mapped_case_json(c, o).dump());
+  try {
+    map_to_effective_volume_fraction({read_library(root / "mapped")}, sphere_ratio, o);
+    FAIL() << "mapped cases were mapped again";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("already effective volume fraction"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EffectiveVolumeFraction, RefusesTiersThatDifferInMoreThanTheResolution) {
