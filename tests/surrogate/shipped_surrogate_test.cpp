@@ -47,6 +47,7 @@ TEST(ShippedSurrogate, ShowsThePhysicalTrends) {
   const ViscositySurrogate model = load_surrogate(kLibrary / "surrogate.json");
   const TrendCheck check = check_trends(model);
   EXPECT_GT(check.phi_steps, 600);
+  EXPECT_LE(check.phi.front(), 0.05 + 1e-12) << "the probe grid must start at phi 0.05";
   EXPECT_LE(check.phi.back(), 0.55 + 1e-12);
   EXPECT_GE(check.phi.back(), 0.55 - 1e-12) << "the probe grid must reach phi 0.55";
   EXPECT_TRUE(check.not_rising_with_phi.empty()) << check.report();
