@@ -96,7 +96,7 @@ void add_library_effective_phi_command(CLI::App& library) {
                   "How much thicker the immersed boundary makes a membrane act, in lattice spacings")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--offset-sd", o->mapping.offset_sd, "Its standard deviation (enters each case's sd)")
+  cmd->add_option("--offset-sd", o->mapping.offset_sd, "The offset's sd, entered in each case's sd as if independent (0: not entered; docs/library.md)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--phi-max", o->mapping.phi_max, "Leave out runs whose effective phi (g phi_actual) exceeds this")

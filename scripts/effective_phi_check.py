@@ -40,7 +40,7 @@ def run(args):
 
 
 def effective_phi(rbcal, tiers, out, offset):
-    # At offset 0 (the runs as they are) no offset uncertainty widens the sds.
+    # As the default library is built (offset sd 0.15); at offset 0, the runs as they are, none.
     text = run([rbcal, "library", "effective-phi", *tiers, "-o", out, "--offset", str(offset),
                 "--offset-sd", "0.15" if offset > 0 else "0", "--scatter-floor", "0.054", "--scatter-phi", "0.05,0.41"])
     m = re.search(r"area ([0-9.]+), volume ([0-9.]+), mean-curvature integral ([0-9.]+)", text)

@@ -11,10 +11,15 @@
 // the cell's volume thickened outwards by c lattice spacings. Each run keeps its eta_re
 // and moves to phi_eff; runs at several resolutions land on one continuum surface.
 //
-// Uncertainty: c is known to about sd_c; through the exponential law eta_re =
-// exp(alpha phi), which holds locally for these suspensions, an error s_g in g moves
-// ln eta_re by ln(eta_re) s_g / g. That enters each case's sd in quadrature with its
-// standard error (raised by the seed-scatter floor of resolution_extrapolation.hpp).
+// Uncertainty: c is known to about +-0.15. Through the exponential law eta_re = exp(alpha
+// phi), which holds locally for these suspensions, an error s_g in g moves ln eta_re by
+// ln(eta_re) s_g / g. That enters each case's sd in quadrature with its standard error
+// (raised by the seed-scatter floor of resolution_extrapolation.hpp). The error is one c for
+// every run, not independent per run; entered per run it acts on the surrogate as a
+// smoothness prior (without it the default loses its shear thinning at dense, low Ca and
+// the main job's fit turns bimodal; with it new dense runs are predicted a little worse:
+// docs/library.md, "Out of sample"). Its effect on eta_re itself is measured by rebuilding
+// at other c (scripts/effective_phi_check.py).
 #include <functional>
 #include <string>
 #include <vector>
@@ -25,11 +30,11 @@
 namespace rbcal::surrogate {
 
 struct EffectiveVolumeFractionOptions {
-  // c and its sd, in lattice spacings. c from the single sphere's intrinsic viscosity at
-  // N_a 6 to 16 (0.75-0.79); the sd spans what the red cells' runs prefer: 0.6 (the runs at
-  // N_a 10 and 12 predicted from those at 6 and 8) to 0.9 (N_a 6 and 8 agreeing best with
-  // each other) (docs/library.md).
+  // c in lattice spacings, from the single sphere's intrinsic viscosity at N_a 6 to 16
+  // (0.75-0.79). The red cells' runs prefer 0.6 (the runs at N_a 10 and 12 predicted from
+  // those at 6 and 8) to 0.9 (N_a 6 and 8 agreeing best with each other) (docs/library.md).
   double offset = 0.75;
+  // The sd of c entered in each case's sd (see above; 0: not entered).
   double offset_sd = 0.15;
   // Runs whose g phi_actual exceeds this are left out (they stand for no physiological sample).
   double phi_max = 0.62;
