@@ -11,7 +11,6 @@
 
 #include "cli/commands.hpp"
 #include "cli/scatter_floor_options.hpp"
-#include "formats/field_reader.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 #include "solver/membrane/thickened_volume.hpp"
@@ -29,18 +28,12 @@ struct EffectivePhiOptions {
   ScatterFloorOptions scatter_phi;
 };
 
-// The Steiner terms of the cell the runs simulated, at radius 1 (cells.* of a case file;
-// every case shares them: they are part of the numerics signature).
+// The Steiner terms of the cell the runs simulated, at radius 1 (cells.* of a case file,
+// read as `rbcal simulate` reads it; every case shares them: they are part of the numerics
+// signature).
 solver::SteinerTerms cell_terms(const surrogate::LibraryCase& c) {
-  const nlohmann::json j = formats::read_json_file(c.source);
-  const formats::FieldReader r(j, c.source.string());
-  solver::SimulationCase cell;
-  const std::string shape = r.text("cells.shape");
-  if (shape != "sphere" && shape != "biconcave") r.fail("cells.shape", "must be \"sphere\" or \"biconcave\"");
-  cell.shape = shape == "sphere" ? solver::CellShape::Sphere : solver::CellShape::Biconcave;
-  if (r.find("cells.profile")) cell.profile = solver::biconcave_profile_from_string(r.text("cells.profile"));
-  cell.triangles = static_cast<int>(r.integer("cells.triangles", 1));
-  return solver::steiner_terms(solver::reference_cell(cell, 1.0));
+  const solver::SimulationCase run = solver::case_from_json(formats::read_json_file(c.source), c.source.string());
+  return solver::steiner_terms(solver::reference_cell(run, 1.0));
 }
 
 void run_effective_phi(const EffectivePhiOptions& o) {
@@ -66,12 +59,11 @@ void run_effective_phi(const EffectivePhiOptions& o) {
   for (int n : {6, 8, 10, 12, 16}) std::printf(" %.3f (N_a %d)", ratio(o.mapping.offset / n), n);
   std::printf("\n  %-34s %8s %10s %8s %7s %10s %16s\n", "run", "phi", "phi_actual", "phi_eff", "g", "eta_re", "sd");
   for (const auto& c : mapped.cases) {
-    formats::write_json_atomically(cases_dir / (surrogate::mapped_case_id(c) + ".json"),
-                                   surrogate::mapped_case_json(c, o.mapping));
+    const std::string id = surrogate::mapped_case_id(c);
+    formats::write_json_atomically(cases_dir / (id + ".json"), surrogate::mapped_case_json(c, o.mapping));
     const fs::path series = c.raw.source.parent_path() / (c.raw.id + ".csv");
-    if (fs::exists(series))
-      fs::copy_file(series, cases_dir / (surrogate::mapped_case_id(c) + ".csv"), fs::copy_options::overwrite_existing);
-    std::printf("  %-34s %8.4g %10.4g %8.4g %7.4f %10.4g %7.2g (sem %.2g)\n", surrogate::mapped_case_id(c).c_str(),
+    if (fs::exists(series)) fs::copy_file(series, cases_dir / (id + ".csv"), fs::copy_options::overwrite_existing);
+    std::printf("  %-34s %8.4g %10.4g %8.4g %7.4f %10.4g %7.2g (sem %.2g)\n", id.c_str(),
                 c.raw.phi, c.raw.phi_actual, c.phi_actual, c.volume_ratio, c.raw.eta_re, c.eta_re_sd, c.raw.eta_re_sem);
   }
   for (const auto& c : mapped.left_out)
