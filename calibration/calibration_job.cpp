@@ -1,6 +1,7 @@
 #include "calibration/calibration_job.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -13,7 +14,7 @@
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "formats/short_number.hpp"
-#include "surrogate/surrogate_file.hpp"
+#include "surrogate/offset_family_file.hpp"
 
 namespace rbcal::calibration {
 
@@ -28,6 +29,29 @@ std::optional<std::pair<std::string, std::string>> compared_samples(const std::s
   const auto slash = compare.find('/');
   if (slash == std::string::npos || slash == 0 || slash + 1 == compare.size()) return std::nullopt;
   return std::make_pair(compare.substr(0, slash), compare.substr(slash + 1));
+}
+
+// The largest Ca of the points at (eta0, G_s): where the lower end of an interval puts them.
+double largest_capillary_number(const std::vector<RelativeViscosityPoint>& points, double plasma_viscosity,
+                                double cell_radius, double shear_modulus) {
+  double largest = 0.0;
+  for (const auto& p : points)
+    largest = std::max(largest, capillary_number(plasma_viscosity, p.shear_rate, cell_radius, shear_modulus));
+  return largest;
+}
+
+// A warning when the lower end of a G_s interval carries fitted points beyond the model's Ca range:
+// there the surrogate extrapolates (its mean function and a growing sd), which the user must know.
+std::optional<std::string> extrapolation_warning(const std::string& method, const std::vector<RelativeViscosityPoint>& points,
+                                                 double plasma_viscosity, double cell_radius, double lower_shear_modulus,
+                                                 const surrogate::ParameterRange& range) {
+  const double ca = largest_capillary_number(points, plasma_viscosity, cell_radius, lower_shear_modulus);
+  if (!(ca > range.ca_max * (1.0 + 1e-9))) return std::nullopt;
+  std::ostringstream w;
+  w << method << ": at the lower end of the G_s interval (" << shown(lower_shear_modulus * 1e6)
+    << " uN/m) the fitted points reach Ca " << shown(ca) << ", beyond the library's " << shown(range.ca_max)
+    << ": there the surrogate extrapolates, and that end of the interval rests on its extrapolation";
+  return w.str();
 }
 
 // Each method of one sample; a method that throws becomes a warning.
@@ -110,6 +134,15 @@ class SampleCalibration {
       if (!r.direct->covariance_ok) r.warnings.push_back("direct fit: covariance rank deficient, no interval");
       if (r.direct->at_bound) r.warnings.push_back("direct fit: an estimate sits on a bound, interval unreliable");
       if (r.direct->model_edge != ModelEdge::none) r.warnings.push_back("direct fit: " + r.direct->model_edge_reason);
+      for (const std::string& m : r.direct->messages)
+        if (m.find("still changed") != std::string::npos) r.warnings.push_back("direct fit: " + m);
+      std::vector<RelativeViscosityPoint> used;
+      for (const auto& f : r.direct->points)
+        if (f.used) used.push_back(f.point);
+      if (r.direct->covariance_ok && r.direct->model_edge == ModelEdge::none)
+        if (auto w = extrapolation_warning("direct fit", used, r.direct->plasma_viscosity, o_.setup.cell_radius,
+                                           r.direct->shear_modulus_interval.lower, model_.range()))
+          r.warnings.push_back(*w);
     } catch (const std::exception& e) {
       r.warnings.push_back(std::string("direct fit failed: ") + e.what());
     }
@@ -127,6 +160,9 @@ class SampleCalibration {
         r.warnings.push_back(std::string("MCMC: posterior truncated at the model's Ca range (the start fit is an edge fit): "
                                          "its G_s interval is an ") +
                              limit_kind(r.mcmc->start_fit.model_edge) + " limit, not an estimate");
+      else if (auto w = extrapolation_warning("MCMC", r.mcmc->points, r.mcmc->plasma_viscosity_median,
+                                              o_.setup.cell_radius, r.mcmc->shear_modulus_interval.lower, model_.range()))
+        r.warnings.push_back(*w);
       PredictiveBandOptions bo;
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;
@@ -281,9 +317,9 @@ CalibrationJobResult run_calibration_job(const CalibrationJobOptions& o, std::os
            " not found; build one with `rbcal surrogate build LIBRARY -o FILE` and pass --surrogate FILE");
   const CalibrationInput input = read_calibration_input(o.data_file, o.plasma);
   selected_samples(input, o);  // a typo in --sample fails before the surrogate is loaded
-  const surrogate::ViscositySurrogate model = surrogate::load_surrogate(o.surrogate_file);
+  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate_file);
   CalibrationJobResult out;
-  out.report = calibrate_samples(input, model, o, log);
+  out.report = calibrate_samples(input, *model, o, log);
   out.files = write_calibration_report(out.report, o.report_folder, o.report);
   log << out.files.brief_report(o.report.plots);
   return out;

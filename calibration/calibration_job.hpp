@@ -23,7 +23,7 @@ namespace rbcal::calibration {
 
 struct CalibrationJobOptions {
   std::filesystem::path data_file;       // rheometer CSV
-  std::filesystem::path surrogate_file;  // rbcal.surrogate/1
+  std::filesystem::path surrogate_file;  // rbcal.surrogate/1 or rbcal.surrogate_family/1
   std::filesystem::path report_folder = "calibration_report";
   std::string method = "all";            // alpha, direct, mcmc or all
   std::vector<std::string> samples;      // empty: every sample of the file

@@ -6,6 +6,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -21,37 +22,73 @@ struct FitParameters {
   double ln_shear_modulus = 0.0;
   double ln_lambda = 0.0;
   double ln_plasma_viscosity = 0.0;
+  double offset = 0.0;  // the immersed boundary's offset c (a model with one)
+};
+
+// One point at the parameters as Ceres passes them: its measured eta_re (with sd, which depends on
+// eta0 when eta0 is a parameter) and the model's prediction.
+struct PointAtParameters {
+  ViscosityObservation observation;
+  RelativeViscosityPoint point;
+  bool plasma_viscosity_is_parameter = false;
+  bool offset_is_parameter = false;
+  std::pair<ObservedRelativeViscosity, surrogate::ViscosityPrediction> operator()(
+      const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
+      const double* offset) const {
+    ViscosityObservation at = observation;
+    at.plasma_viscosity = std::exp(ln_plasma_viscosity[0]);
+    if (offset_is_parameter) at.offset = offset[0];
+    return {observed_relative_viscosity(point, plasma_viscosity_is_parameter, at.plasma_viscosity),
+            at.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]))};
+  }
 };
 
 // (eta_re - model) / sqrt(measurement var + model var); differentiated numerically so that the
 // dependence of the model's sd on the parameters is part of the Jacobian too.
 struct WeightedResidual {
-  ViscosityObservation observation;
-  RelativeViscosityPoint point;
-  bool plasma_viscosity_is_parameter = false;
+  PointAtParameters at;
   bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
-                  double* residual) const {
-    ViscosityObservation at = observation;
-    at.plasma_viscosity = std::exp(ln_plasma_viscosity[0]);
-    const auto measured = observed_relative_viscosity(point, plasma_viscosity_is_parameter, at.plasma_viscosity);
-    const auto p = at.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]));
+                  const double* offset, double* residual) const {
+    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, offset);
     residual[0] = (measured.eta_re - p.eta_re) / std::sqrt(measured.sd * measured.sd + p.sd * p.sd);
     return std::isfinite(residual[0]);
   }
   double operator()(const FitParameters& x) const {
     double r = 0.0;
-    (*this)(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &r);
+    (*this)(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.offset, &r);
     return r;
   }
 };
 
-// The plateau estimate of eta0 as a Gaussian prior on ln eta0, written as a residual.
-struct PlasmaViscosityPrior {
-  double ln_estimate;
-  double relative_standard_error;
+// The Gaussian likelihood's normalisation, 0.5 ln v_i per point (v_i = measurement var + model
+// var), written as a residual sqrt(ln(v_i / v_ref) + K) whose half square is that term up to a
+// constant. Without it a least-squares fit is drawn to where the model is least certain (a
+// large v_i shrinks every residual), while the posterior (posterior.hpp) keeps the term; with it
+// the fit is the posterior's mode, and the direct fit and the MCMC answer the same question.
+// v_ref is the measurement variance at the start; K = 10 keeps the root real unless eta0 moves
+// by a factor e^5.
+struct LogVarianceResidual {
+  PointAtParameters at;
+  double ln_reference_variance = 0.0;
+  static constexpr double kShift = 10.0;
+  bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
+                  const double* offset, double* residual) const {
+    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, offset);
+    const double argument = std::log(measured.sd * measured.sd + p.sd * p.sd) - ln_reference_variance + kShift;
+    if (!(argument > 0.0)) return false;
+    residual[0] = std::sqrt(argument);
+    return std::isfinite(residual[0]);
+  }
+};
+
+// A Gaussian prior on one parameter written as a residual: the plateau estimate of eta0 on
+// ln eta0, the offset's prior on c.
+struct GaussianPrior {
+  double mean;
+  double sd;
   template <typename T>
-  bool operator()(const T* ln_plasma_viscosity, T* residual) const {
-    residual[0] = (ln_plasma_viscosity[0] - ln_estimate) / relative_standard_error;
+  bool operator()(const T* parameter, T* residual) const {
+    residual[0] = (parameter[0] - mean) / sd;
     return true;
   }
 };
@@ -149,22 +186,27 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   const ViscosityObservation obs{&model, sample.plasma.eta0, options.setup.cell_radius};
   const surrogate::ParameterRange range = model.range();
   const bool fit_eta0 = options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample);
+  const std::optional<surrogate::OffsetPrior> offset_prior = model.offset_prior();
+  const bool fit_offset = options.offset_as_parameter && offset_prior.has_value();
   DirectFitResult result;
   result.plasma_viscosity_fitted = fit_eta0;
+  result.offset_fitted = fit_offset;
   result.parameter_names = {"ln_G_s"};
   if (options.setup.fit_lambda) result.parameter_names.push_back("ln_lambda");
   if (fit_eta0) result.parameter_names.push_back("ln_eta0");
+  if (fit_offset) result.parameter_names.push_back("offset_c");
   const int parameters = static_cast<int>(result.parameter_names.size());
   const int fitted_to_data = options.setup.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
 
   FitParameters x;
   x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
   x.ln_lambda = std::log(options.setup.lambda);
+  x.offset = fit_offset ? offset_prior->mean : 0.0;  // unused without an offset; Ceres needs it finite
   const double ln_lambda_lo = std::log(std::max(range.lambda_min, 1e-300));
   const double ln_lambda_hi = std::log(std::max(range.lambda_max, 1e-300));
   if (options.setup.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
   std::vector<WeightedResidual> residuals;
-  for (const auto& p : sample.points) residuals.push_back({obs, p, fit_eta0});
+  for (const auto& p : sample.points) residuals.push_back({{obs, p, fit_eta0, fit_offset}});
   x.ln_shear_modulus = scan_start(residuals, obs, sample.points, options, x);
   const double ln_gs_lo = std::log(options.shear_modulus_min), ln_gs_hi = std::log(options.shear_modulus_max);
 
@@ -208,12 +250,18 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       x.ln_shear_modulus = std::clamp(x.ln_shear_modulus, lo, hi);
     }
     ceres::Problem problem;
+    std::vector<ceres::ResidualBlockId> normalisation_blocks;
     for (std::size_t i = 0; i < sample.points.size(); ++i) {
       if (!used[i]) continue;
-      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1>(
+      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1>(
           new WeightedResidual(residuals[i]));
       problem.AddResidualBlock(cost, make_loss(options), &x.ln_shear_modulus, &x.ln_lambda,
-                               &x.ln_plasma_viscosity);
+                               &x.ln_plasma_viscosity, &x.offset);
+      const auto measured = observed_relative_viscosity(sample.points[i], fit_eta0, sample.plasma.eta0);
+      auto* normalisation = new ceres::NumericDiffCostFunction<LogVarianceResidual, ceres::CENTRAL, 1, 1, 1, 1, 1>(
+          new LogVarianceResidual{residuals[i].at, std::log(measured.sd * measured.sd)});
+      normalisation_blocks.push_back(problem.AddResidualBlock(normalisation, nullptr, &x.ln_shear_modulus, &x.ln_lambda,
+                                                              &x.ln_plasma_viscosity, &x.offset));
     }
     std::vector<double*> free_blocks = {&x.ln_shear_modulus};
     problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, lo);
@@ -226,12 +274,22 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       problem.SetParameterBlockConstant(&x.ln_lambda);
     }
     if (fit_eta0) {
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PlasmaViscosityPrior, 1, 1>(new PlasmaViscosityPrior{
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(new GaussianPrior{
                                    std::log(sample.plasma.eta0), sample.plasma.standard_error / sample.plasma.eta0}),
                                nullptr, &x.ln_plasma_viscosity);
       free_blocks.push_back(&x.ln_plasma_viscosity);
     } else {
       problem.SetParameterBlockConstant(&x.ln_plasma_viscosity);
+    }
+    if (fit_offset) {
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(
+                                   new GaussianPrior{offset_prior->mean, offset_prior->sd}),
+                               nullptr, &x.offset);
+      problem.SetParameterLowerBound(&x.offset, 0, offset_prior->min);
+      problem.SetParameterUpperBound(&x.offset, 0, offset_prior->max);
+      free_blocks.push_back(&x.offset);
+    } else {
+      problem.SetParameterBlockConstant(&x.offset);
     }
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;  // bounds need it
@@ -252,6 +310,9 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
         result.messages.push_back("the set of points inside the model's range still changed after the last refit");
       result.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
       result.solver_report = summary.BriefReport();
+      // The covariance of the weighted residuals and priors (Gauss-Newton): the normalisation
+      // terms are not sums of squares, and their Gauss-Newton part would depend on K.
+      for (ceres::ResidualBlockId id : normalisation_blocks) problem.RemoveResidualBlock(id);
       result.covariance_ok = laplace_covariance(problem, free_blocks, &result.covariance);
       if (!result.covariance_ok) {
         result.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -266,7 +327,9 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   result.estimate.resize(parameters);
   result.estimate(0) = x.ln_shear_modulus;
   if (options.setup.fit_lambda) result.estimate(1) = x.ln_lambda;
-  if (fit_eta0) result.estimate(parameters - 1) = x.ln_plasma_viscosity;
+  if (fit_eta0) result.estimate(result.index_of("ln_eta0")) = x.ln_plasma_viscosity;
+  if (fit_offset) result.estimate(result.index_of("offset_c")) = x.offset;
+  result.offset = fit_offset ? x.offset : std::numeric_limits<double>::quiet_NaN();
   result.shear_modulus = std::exp(x.ln_shear_modulus);
   result.lambda = std::exp(x.ln_lambda);
   result.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
@@ -290,11 +353,13 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   result.at_bound =
       x.ln_shear_modulus - lo < bound_tolerance || hi - x.ln_shear_modulus < bound_tolerance ||
       (options.setup.fit_lambda &&
-       (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance));
+       (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance)) ||
+      (fit_offset && (x.offset - offset_prior->min < bound_tolerance || offset_prior->max - x.offset < bound_tolerance));
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
   ViscosityObservation at_estimate = obs;
   at_estimate.plasma_viscosity = result.plasma_viscosity;
+  if (fit_offset) at_estimate.offset = x.offset;
   for (std::size_t i = 0; i < sample.points.size(); ++i) {
     FittedPoint f;
     f.point = sample.points[i];
@@ -332,6 +397,14 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     result.lambda_interval = {std::exp(x.ln_lambda - z * sd), std::exp(x.ln_lambda + z * sd), options.interval_level};
   } else {
     result.lambda_interval = {result.lambda, result.lambda, options.interval_level};
+  }
+  if (fit_offset) {
+    const int k = result.index_of("offset_c");
+    const double sd = std::sqrt(result.covariance(k, k));
+    result.offset_interval = {std::max(offset_prior->min, x.offset - z * sd),
+                              std::min(offset_prior->max, x.offset + z * sd), options.interval_level};
+  } else {
+    result.offset_interval = {result.offset, result.offset, options.interval_level};
   }
   return result;
 }

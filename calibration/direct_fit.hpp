@@ -3,7 +3,9 @@
 // model's range by weighted least squares (Ceres), with a Laplace (Gauss-Newton) covariance.
 // eta0 is by default a nuisance parameter ln eta0 with the plateau estimate as a Gaussian prior
 // (a prior residual (ln eta0 - ln eta0_hat) / (se / eta0_hat)), so that its error, common to all
-// points, reaches G_s's interval.
+// points, reaches G_s's interval. A model with the immersed boundary's offset c (a surrogate
+// family) adds c the same way: a parameter with its prior as a residual (c - mean) / sd, bounded
+// to the family's offsets.
 #include <string>
 #include <vector>
 
@@ -23,6 +25,8 @@ struct DirectFitOptions {
   // Fit ln eta0 with its plateau prior when the sample allows it (plasma standard error > 0 and
   // absolute viscosities on every point); otherwise eta0 is fixed and its error is in eta_re_sd.
   bool plasma_viscosity_as_parameter = true;
+  // Fit the offset c with its prior when the model has one; false: the model's prior mean.
+  bool offset_as_parameter = true;
   double shear_modulus_min = 1e-8;  // bounds on G_s [N/m]; ln lambda is bounded by the model's range
   double shear_modulus_max = 1e-3;
   RobustLoss loss = RobustLoss::none;
@@ -52,7 +56,7 @@ inline const char* limit_kind(ModelEdge edge) {
 }
 
 struct DirectFitResult {
-  std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0"
+  std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0", "offset_c"
   Eigen::VectorXd estimate;                  // in that order
   Eigen::MatrixXd covariance;                // Laplace covariance of the estimate
   bool covariance_ok = false;                // false: Covariance::Compute failed (rank deficient)
@@ -71,9 +75,19 @@ struct DirectFitResult {
   int degrees_of_freedom = 0;
   double plasma_viscosity = 0.0;   // eta0 at the estimate [Pa s] (the plateau value when fixed)
   bool plasma_viscosity_fitted = false;
+  bool offset_fitted = false;
+  double offset = 0.0;      // c at the estimate (NaN when the model has none)
+  Interval offset_interval;  // normal interval on c, clipped to the prior's support
   std::vector<FittedPoint> points;
   std::vector<std::string> messages;
   std::string solver_report;  // Ceres' brief report of the last solve
+
+  // Index of a parameter in estimate and covariance, -1 when not fitted.
+  int index_of(const std::string& name) const {
+    for (std::size_t i = 0; i < parameter_names.size(); ++i)
+      if (parameter_names[i] == name) return static_cast<int>(i);
+    return -1;
+  }
 };
 
 // Throws std::invalid_argument when fewer points than parameters lie in the model's range at the

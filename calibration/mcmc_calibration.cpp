@@ -24,6 +24,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   DirectFitOptions fit_options = options.start_fit;
   fit_options.setup = options.posterior.setup;
   fit_options.plasma_viscosity_as_parameter = options.posterior.plasma_viscosity_as_parameter;
+  fit_options.offset_as_parameter = options.posterior.offset_as_parameter;
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
   out.start_fit = fit_direct(sample, model, fit_options);
@@ -47,16 +48,23 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
     if (out.start_fit.covariance_ok) start.scale(posterior.lambda_index()) = std::sqrt(out.start_fit.covariance(1, 1));
   }
   if (posterior.plasma_viscosity_index() >= 0) {
-    const int last = static_cast<int>(out.start_fit.estimate.size()) - 1;
+    const int k = out.start_fit.index_of("ln_eta0");
     start.center(posterior.plasma_viscosity_index()) = std::log(out.start_fit.plasma_viscosity);
-    if (out.start_fit.plasma_viscosity_fitted && out.start_fit.covariance_ok)
-      start.scale(posterior.plasma_viscosity_index()) = std::sqrt(out.start_fit.covariance(last, last));
+    if (k >= 0 && out.start_fit.covariance_ok)
+      start.scale(posterior.plasma_viscosity_index()) = std::sqrt(out.start_fit.covariance(k, k));
     else
       start.scale(posterior.plasma_viscosity_index()) = sample.plasma.standard_error / sample.plasma.eta0;
   }
   if (posterior.discrepancy_index() >= 0) {
     start.center(posterior.discrepancy_index()) = std::log(options.posterior.discrepancy_prior_median);
     start.scale(posterior.discrepancy_index()) = 0.3 * options.posterior.discrepancy_prior_log_sd;
+  }
+  if (posterior.offset_index() >= 0) {
+    const int k = out.start_fit.index_of("offset_c");
+    const surrogate::OffsetPrior prior = *model.offset_prior();
+    start.center(posterior.offset_index()) = k >= 0 ? out.start_fit.offset : prior.mean;
+    start.scale(posterior.offset_index()) =
+        k >= 0 && out.start_fit.covariance_ok ? std::sqrt(out.start_fit.covariance(k, k)) : 0.3 * prior.sd;
   }
   for (int p = 0; p < d; ++p)
     if (!(start.scale(p) > 0.0) || !std::isfinite(start.scale(p))) start.scale(p) = 0.1;
@@ -83,6 +91,10 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   } else {
     out.plasma_viscosity_median = sample.plasma.eta0;
     out.plasma_viscosity_interval = {sample.plasma.eta0, sample.plasma.eta0, options.sampler.interval_level};
+  }
+  if (posterior.offset_index() >= 0) {
+    out.offset_median = summaries[posterior.offset_index()].median;
+    out.offset_interval = summaries[posterior.offset_index()].interval;
   }
   return out;
 }

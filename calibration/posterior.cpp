@@ -39,6 +39,26 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
     plasma_viscosity_index_ = static_cast<int>(names_.size());
     names_.push_back("ln_eta0");
   }
+  if (const auto prior = model.offset_prior(); prior && options_.offset_as_parameter) {
+    offset_prior_ = *prior;
+    // Truncated normal: ln(sd sqrt(2 pi) (Phi(b) - Phi(a))).
+    const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); };
+    const double mass = cdf((prior->max - prior->mean) / prior->sd) - cdf((prior->min - prior->mean) / prior->sd);
+    offset_log_normaliser_ = std::log(prior->sd * std::sqrt(2.0 * std::numbers::pi) * mass);
+    offset_index_ = static_cast<int>(names_.size());
+    names_.push_back("offset_c");
+  }
+}
+
+double LogPosterior::offset(const Eigen::VectorXd& theta) const {
+  return offset_index_ >= 0 ? theta(offset_index_) : std::numeric_limits<double>::quiet_NaN();
+}
+
+ViscosityObservation LogPosterior::observation_at(const Eigen::VectorXd& theta) const {
+  ViscosityObservation at = observation_;
+  at.plasma_viscosity = plasma_viscosity(theta);
+  at.offset = offset(theta);
+  return at;
 }
 
 double LogPosterior::plasma_viscosity(const Eigen::VectorXd& theta) const {
@@ -76,6 +96,12 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
     if (!std::isfinite(z)) return minus_infinity;
     log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
   }
+  if (offset_index_ >= 0) {
+    const double c = theta(offset_index_);
+    if (!(c >= offset_prior_.min && c <= offset_prior_.max)) return minus_infinity;
+    const double z = (c - offset_prior_.mean) / offset_prior_.sd;
+    log_p += -0.5 * z * z - offset_log_normaliser_;
+  }
   return log_p;
 }
 
@@ -83,8 +109,7 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
   const double shear_modulus = std::exp(theta(0));
   const double lambda_value = lambda(theta);
   const double sigma_d = discrepancy(theta);
-  ViscosityObservation at = observation_;
-  at.plasma_viscosity = plasma_viscosity(theta);
+  const ViscosityObservation at = observation_at(theta);
   double sum = 0.0;
   for (const auto& point : points_) {
     if (options_.reject_outside_model_range && !at.inside_range(point, shear_modulus, lambda_value))

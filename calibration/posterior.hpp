@@ -1,5 +1,5 @@
 #pragma once
-// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0]) for one sample.
+// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0] [, c]) for one sample.
 //
 // Likelihood (independent Gaussian errors on eta_re):
 //   eta_re_i ~ N(m_i, v_i),  m_i = model eta_re(phi_i, Ca_i(G_s), lambda),
@@ -40,6 +40,8 @@ struct PosteriorOptions {
   bool reject_outside_model_range = false;
   // Add ln eta0 when possible: eta0's standard error > 0 and every point has its viscosity.
   bool plasma_viscosity_as_parameter = true;
+  // Add the offset c when the model has one; false: the model predicts at its prior mean.
+  bool offset_as_parameter = true;
 };
 
 class LogPosterior {
@@ -54,10 +56,14 @@ class LogPosterior {
   int lambda_index() const { return lambda_index_; }            // -1 when lambda is fixed
   int discrepancy_index() const { return discrepancy_index_; }  // -1 without sigma_d
   int plasma_viscosity_index() const { return plasma_viscosity_index_; }  // -1 with eta0 fixed
+  int offset_index() const { return offset_index_; }  // -1 without the offset
 
   double lambda(const Eigen::VectorXd& theta) const;
   double discrepancy(const Eigen::VectorXd& theta) const;  // sigma_d (0 without it)
   double plasma_viscosity(const Eigen::VectorXd& theta) const;  // eta0 [Pa s]
+  double offset(const Eigen::VectorXd& theta) const;  // c; NaN without it (the model's own choice)
+  // The observation at theta: eta0 and the offset set.
+  ViscosityObservation observation_at(const Eigen::VectorXd& theta) const;
 
   double log_prior(const Eigen::VectorXd& theta) const;       // -inf outside the support
   double log_likelihood(const Eigen::VectorXd& theta) const;  // Gaussian, normalising constants kept
@@ -75,6 +81,9 @@ class LogPosterior {
   int lambda_index_ = -1;
   int discrepancy_index_ = -1;
   int plasma_viscosity_index_ = -1;
+  int offset_index_ = -1;
+  surrogate::OffsetPrior offset_prior_;
+  double offset_log_normaliser_ = 0.0;
   double plasma_viscosity_standard_error_ = 0.0;
 };
 

@@ -49,8 +49,7 @@ std::vector<PredictiveBand> predictive_bands(const surrogate::ViscosityModel& mo
       std::vector<double> eta(static_cast<std::size_t>(n_draws));
       for (Eigen::Index k = 0; k < n_draws; ++k) {
         const Eigen::VectorXd theta = all.row(k * all.rows() / n_draws).transpose();
-        ViscosityObservation obs = posterior.observation();
-        obs.plasma_viscosity = posterior.plasma_viscosity(theta);
+        const ViscosityObservation obs = posterior.observation_at(theta);
         const auto p = obs.predict(at, std::exp(theta(0)), posterior.lambda(theta));
         double eta_re = p.eta_re;
         if (options.include_model_error)

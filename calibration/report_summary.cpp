@@ -89,6 +89,11 @@ json direct_json(const DirectFitResult& d) {
       std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end();
   j["lambda_fitted"] = lambda_fitted;
   if (lambda_fitted) j["lambda_interval"] = interval_json(d.lambda_interval, 1.0);
+  j["offset_fitted"] = d.offset_fitted;
+  if (d.offset_fitted) {
+    j["offset_c"] = d.offset;
+    j["offset_c_interval"] = interval_json(d.offset_interval, 1.0);
+  }
   return j;
 }
 
@@ -103,6 +108,10 @@ json mcmc_json(const McmcCalibration& m) {
             {"eta0_interval_mPa_s", interval_json(m.plasma_viscosity_interval, kMilli)},
             {"points_in_likelihood", m.points.size()}};
   if (m.posterior.setup.fit_lambda) j["lambda_interval"] = interval_json(m.lambda_interval, 1.0);
+  if (!std::isnan(m.offset_median)) {
+    j["offset_c"] = m.offset_median;
+    j["offset_c_interval"] = interval_json(m.offset_interval, 1.0);
+  }
   if (m.posterior.fit_discrepancy) {
     j["sigma_d"] = m.discrepancy_median;
     j["sigma_d_interval"] = interval_json(m.discrepancy_interval, 1.0);

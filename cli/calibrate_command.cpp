@@ -21,7 +21,7 @@ namespace cal = rbcal::calibration;
 struct CalibrateOptions {
   cal::CalibrationJobOptions job;
   std::string data = shipped_file("samples/kim2017_whole_blood.csv");
-  std::string surrogate = shipped_file("library/default/surrogate.json");
+  std::string surrogate = shipped_file("library/default/surrogate_family.json");
   std::string report = "calibration_report";
   double cell_radius_um = cal::kDefaultCellRadius * 1e6;
   bool no_plots = false;
@@ -54,7 +54,10 @@ void add_calibrate_command(CLI::App& app) {
       "writes a report folder (summary.json, CSV tables, PNG/SVG plots)");
   c->add_option("data", o->data, "Rheometer CSV: sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n")
       ->capture_default_str();
-  c->add_option("--surrogate", o->surrogate, "Surrogate file (rbcal.surrogate/1, from `rbcal surrogate build`)")
+  c->add_option("--surrogate", o->surrogate,
+                "Surrogate (rbcal.surrogate/1, `rbcal surrogate build`) or surrogate family (rbcal.surrogate_family/1, "
+                "`rbcal surrogate family`: the immersed boundary's offset becomes a nuisance parameter of the direct "
+                "fit and the MCMC)")
       ->capture_default_str();
   c->add_option("--method", j.method, "Method: alpha, direct, mcmc or all")
       ->check(CLI::IsMember({"alpha", "direct", "mcmc", "all"}))

@@ -1,15 +1,20 @@
 // `rbcal surrogate build LIB [-o OUT]`: fit the Gaussian-process surrogate to a simulation
 // library and report its leave-one-out errors; `rbcal surrogate predict SURROGATE --phi
-// --ca --lambda`: eta_re with its predictive sd from a saved surrogate.
+// --ca --lambda [--offset C]`: eta_re with its predictive sd from a saved surrogate or family;
+// `rbcal surrogate family --member C=FILE ... -o OUT`: surrogates of one library at several
+// immersed-boundary offsets as one model with the offset as a nuisance parameter.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "calibration/model_setup.hpp"
 #include "cli/commands.hpp"
+#include "surrogate/offset_family_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "surrogate/trend_check.hpp"
 
@@ -26,6 +31,13 @@ struct SurrogateBuildOptions {
 struct SurrogatePredictOptions {
   std::string surrogate;
   double phi = 0.0, ca = 0.0, lambda = calibration::kDefaultViscosityRatio;
+  double offset = std::nan("");  // a family's offset; NaN: its prior mean
+};
+
+struct SurrogateFamilyOptions {
+  std::vector<std::string> members;  // OFFSET=FILE
+  double prior_mean = 0.75, prior_sd = 0.15;
+  std::string output;
 };
 
 void print_model(const surrogate::ViscositySurrogate& s) {
@@ -67,9 +79,21 @@ void run_build(const SurrogateBuildOptions& o) {
 }
 
 void run_predict(const SurrogatePredictOptions& o) {
-  const surrogate::ViscositySurrogate s = surrogate::load_surrogate(o.surrogate);
-  const surrogate::ViscosityPrediction p = s.predict(o.phi, o.ca, o.lambda);
+  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
+  const surrogate::ViscosityModel& s = *model;
+  const std::optional<surrogate::OffsetPrior> prior = s.offset_prior();
+  if (!std::isnan(o.offset) && !prior)
+    throw CLI::ValidationError("--offset", o.surrogate + " is a single surrogate, not a family with an offset");
+  const double offset = std::isnan(o.offset) && prior ? prior->mean : o.offset;
+  if (prior && !(offset >= prior->min && offset <= prior->max))
+    throw CLI::ValidationError("--offset", "must lie within the family's offsets " + std::to_string(prior->min) +
+                                               " .. " + std::to_string(prior->max));
+  const surrogate::ViscosityPrediction p = prior ? s.predict_at_offset(o.phi, o.ca, o.lambda, offset)
+                                                 : s.predict(o.phi, o.ca, o.lambda);
   std::printf("phi %.4g, Ca %.4g, lambda %.4g\n", o.phi, o.ca, o.lambda);
+  if (prior)
+    std::printf("  offset c            %.4g (family prior %.4g +- %.4g, members %.4g .. %.4g)\n", offset, prior->mean,
+                prior->sd, prior->min, prior->max);
   std::printf("  eta_re              %.6g +- %.3g (1 sd, surrogate uncertainty)\n", p.eta_re, p.sd);
   std::printf("  d eta_re / d phi    %.6g\n", p.d_phi);
   std::printf("  d eta_re / d ln Ca  %.6g\n", p.d_ln_ca);
@@ -80,6 +104,35 @@ void run_predict(const SurrogatePredictOptions& o) {
                 r.phi_min, r.phi_max, r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
     std::cerr << "rbcal surrogate predict: warning: query outside the library's range\n";
   }
+}
+
+void run_family(const SurrogateFamilyOptions& o) {
+  std::vector<surrogate::SurrogateFamilyMember> members;
+  for (const std::string& m : o.members) {
+    const auto eq = m.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == m.size())
+      throw CLI::ValidationError("--member", "expected OFFSET=FILE, got \"" + m + "\"");
+    double offset = 0.0;
+    try {
+      std::size_t used = 0;
+      offset = std::stod(m.substr(0, eq), &used);
+      if (used != eq) throw std::invalid_argument("trailing characters");
+    } catch (const std::exception&) {
+      throw CLI::ValidationError("--member", "offset \"" + m.substr(0, eq) + "\" is not a number");
+    }
+    members.push_back({offset, surrogate::load_surrogate(m.substr(eq + 1))});
+  }
+  surrogate::save_surrogate_family(members, o.prior_mean, o.prior_sd, o.output);
+  const surrogate::OffsetFamilyModel family = surrogate::load_surrogate_family(o.output);
+  std::printf("rbcal surrogate family: %zu members -> %s\n", family.members().size(), o.output.c_str());
+  const surrogate::ParameterRange r = family.range();
+  std::printf("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", o.prior_mean,
+              o.prior_sd, family.members().front().offset, family.members().back().offset);
+  std::printf("  common range        phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
+              r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
+  std::printf("  phi 0.41, Ca 0.8, lambda 5 (eta_re per member):");
+  for (const auto& m : family.members()) std::printf(" c %.3g: %.3f", m.offset, m.model->predict(0.41, 0.8, 5.0).eta_re);
+  std::printf("\n");
 }
 
 }  // namespace
@@ -100,18 +153,37 @@ void add_surrogate_command(CLI::App& app) {
 
   auto p = std::make_shared<SurrogatePredictOptions>();
   CLI::App* predict = surrogate->add_subcommand("predict", "eta_re +- sd and derivatives from a saved surrogate");
-  predict->add_option("surrogate", p->surrogate, "Surrogate file (rbcal.surrogate/1)")->required()->check(CLI::ExistingFile);
+  predict->add_option("surrogate", p->surrogate, "Surrogate file (rbcal.surrogate/1) or family (rbcal.surrogate_family/1)")
+      ->required()
+      ->check(CLI::ExistingFile);
   predict->add_option("--phi", p->phi, "Volume fraction")->required()->check(CLI::Range(0.0, 1.0));
   predict->add_option("--ca", p->ca, "Capillary number eta0 gamma_dot a / G_s")->required()->check(CLI::PositiveNumber);
   predict->add_option("--lambda", p->lambda, "Viscosity ratio eta1 / eta0")->capture_default_str()->check(CLI::PositiveNumber);
+  predict->add_option("--offset", p->offset, "A family's immersed-boundary offset c (default: its prior mean)");
   predict->callback([p] { run_predict(*p); });
+
+  auto f = std::make_shared<SurrogateFamilyOptions>();
+  CLI::App* family = surrogate->add_subcommand(
+      "family",
+      "Join surrogates of one library mapped at equally spaced offsets c (rbcal library effective-phi --offset C) "
+      "into one model whose offset the calibration treats as a nuisance parameter");
+  family->add_option("--member", f->members, "OFFSET=SURROGATE_FILE (at least two, equally spaced offsets)")
+      ->required();
+  family->add_option("--prior-mean", f->prior_mean, "Prior mean of c [lattice spacings]")->capture_default_str();
+  family->add_option("--prior-sd", f->prior_sd, "Prior sd of c (truncated to the members' offsets)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  family->add_option("-o,--output", f->output, "Family file (rbcal.surrogate_family/1)")->required();
+  family->callback([f] { run_family(*f); });
 
   auto check_file = std::make_shared<std::string>();
   CLI::App* check = surrogate->add_subcommand(
       "check", "Physical trends over a probe grid: rises with phi, shear thinning, high-shear blood (exit 1 on failure)");
-  check->add_option("surrogate", *check_file, "Surrogate file (rbcal.surrogate/1)")->required()->check(CLI::ExistingFile);
+  check->add_option("surrogate", *check_file, "Surrogate file (rbcal.surrogate/1) or family (at its prior mean)")
+      ->required()
+      ->check(CLI::ExistingFile);
   check->callback([check_file] {
-    const surrogate::TrendCheck t = surrogate::check_trends(surrogate::load_surrogate(*check_file));
+    const surrogate::TrendCheck t = surrogate::check_trends(*surrogate::load_viscosity_model(*check_file));
     std::cout << "rbcal surrogate check: " << *check_file << "\n" << t.report();
     if (!t.passed()) throw CLI::RuntimeError(1);
   });

@@ -21,6 +21,7 @@ namespace rbcal::formats {
 inline constexpr const char* kCaseSchema = "rbcal.case/1";
 inline constexpr const char* kPlanSchema = "rbcal.plan/1";
 inline constexpr const char* kSurrogateSchema = "rbcal.surrogate/1";
+inline constexpr const char* kSurrogateFamilySchema = "rbcal.surrogate_family/1";
 inline constexpr const char* kProposalSchema = "rbcal.proposal/1";
 inline constexpr const char* kCalibrationReportSchema = "rbcal.calibration_report/1";
 

@@ -14,7 +14,7 @@
 #include "calibration/posterior.hpp"
 #include "calibration/report_summary.hpp"
 #include "python/bindings.hpp"
-#include "surrogate/surrogate_file.hpp"
+#include "surrogate/offset_family_file.hpp"
 
 namespace py = pybind11;
 
@@ -28,7 +28,7 @@ py::object to_python(const nlohmann::json& j) { return py::module_::import("json
 
 // A calibration and the model it ran on (kept alive for log_posterior).
 struct Calibration {
-  std::shared_ptr<const surrogate::ViscositySurrogate> model;
+  std::shared_ptr<const surrogate::ViscosityModel> model;  // a surrogate or a surrogate family
   cal::CalibrationReport report;
   cal::CalibrationJobOptions options;
   std::string log;
@@ -47,7 +47,7 @@ struct Calibration {
 
 // The posterior the MCMC sampled, as a callable of theta (a 1-D array).
 struct PosteriorFunction {
-  std::shared_ptr<const surrogate::ViscositySurrogate> model;
+  std::shared_ptr<const surrogate::ViscosityModel> model;  // a surrogate or a surrogate family
   cal::LogPosterior posterior;
   double operator()(const Eigen::VectorXd& theta) const {
     if (theta.size() != posterior.dimension())
@@ -89,7 +89,7 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
   o.report.plots = plots;
   o.command_line = "rbcal.calibrate (Python)";
   if (const std::string why = o.invalid_reason(); !why.empty()) throw py::value_error(why);
-  c.model = std::make_shared<const surrogate::ViscositySurrogate>(surrogate::load_surrogate(surrogate_file));
+  c.model = surrogate::load_viscosity_model(surrogate_file);
   std::ostringstream log;
   {
     py::gil_scoped_release release;  // long MCMC runs; the C++ side touches no Python object
@@ -165,7 +165,7 @@ void bind_calibration(py::module_& m) {
         py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
         py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 16, py::arg("sampler") = "independence", py::arg("compare") = "",
         py::arg("report") = "", py::arg("plots") = false,
-        "G_s of each sample in a rheometer CSV against a surrogate file, by the alpha method, the direct fit and MCMC "
+        "G_s of each sample in a rheometer CSV against a surrogate or surrogate-family file, by the alpha method, the direct fit and MCMC "
         "(the options and defaults of `rbcal calibrate`); report: also write the report folder there");
 }
 

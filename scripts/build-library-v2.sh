@@ -8,7 +8,12 @@
 #      effective volume fraction"); runs beyond phi_eff 0.62 are left out;
 #      METHOD=richardson (the default until then): Richardson extrapolation of the (6, 8)
 #      pairs (rbcal library extrapolate, order 2.8 and P_LOW (--order-low) 1.5);
-#   3. build its surrogate and check its trends (rbcal surrogate build / check).
+#   3. build its surrogate and check its trends (rbcal surrogate build / check);
+#   4. (effective-phi) the surrogate family: the same runs mapped at FAMILY_OFFSETS (default
+#      0.45 0.6 0.75 0.9 1.05, equally spaced, OFFSET among them) joined into
+#      data/library/default/surrogate_family.json with the prior OFFSET +- OFFSET_SD
+#      (rbcal surrogate family), the model the calibration uses by default: the offset is
+#      then a nuisance parameter of every fit (docs/calibration.md).
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 # Under either method:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
@@ -72,3 +77,21 @@ else
 fi
 "$rbcal" surrogate build "$out"
 "$rbcal" surrogate check "$out/surrogate.json" || echo "trend check FAILED (see above)"
+if [ "${METHOD:-effective-phi}" != richardson ]; then
+  members=()
+  work="$(mktemp -d)"
+  for c in ${FAMILY_OFFSETS:-0.45 0.6 0.75 0.9 1.05}; do
+    if [ "$c" = "${OFFSET:-0.75}" ]; then
+      members+=(--member "$c=$out/surrogate.json")
+      continue
+    fi
+    echo "family member at offset $c:"
+    "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$work/c$c" --offset "$c" --offset-sd "${OFFSET_SD:-0.15}" \
+      --phi-max "${PHI_MAX:-0.62}" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}" > /dev/null
+    "$rbcal" surrogate build "$work/c$c" | grep -E "training cases|RMS relative error"
+    members+=(--member "$c=$work/c$c/surrogate.json")
+  done
+  "$rbcal" surrogate family "${members[@]}" --prior-mean "${OFFSET:-0.75}" --prior-sd "${OFFSET_SD:-0.15}" \
+    -o "$out/surrogate_family.json"
+  rm -rf "$work"
+fi

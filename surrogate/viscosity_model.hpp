@@ -4,6 +4,8 @@
 // The Gaussian-process surrogate implements it; tests implement it with known
 // analytic functions. All quantities are dimensionless (DESIGN.md section 2).
 
+#include <optional>
+
 namespace rbcal::surrogate {
 
 struct ViscosityPrediction {
@@ -22,12 +24,29 @@ struct ParameterRange {
   double lambda_min = 0.0, lambda_max = 0.0;
 };
 
+// The immersed boundary's offset c (lattice spacings): how much thicker the membranes act
+// than they are, which sets the volume fraction a finite-resolution run stands for
+// (docs/library.md, "The effective volume fraction"). A model built from such runs at several
+// c has it as a nuisance parameter: its prior is normal(mean, sd) truncated to [min, max].
+struct OffsetPrior {
+  double mean = 0.0, sd = 0.0;
+  double min = 0.0, max = 0.0;
+};
+
 class ViscosityModel {
  public:
   virtual ~ViscosityModel() = default;
   // phi: volume fraction, capillary_number: Ca = eta0 gamma_dot a / G_s, viscosity_ratio: lambda = eta1 / eta0.
+  // A model with an offset predicts at its prior mean here.
   virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
   virtual ParameterRange range() const = 0;
+
+  // Models without an offset: none, and predict_at_offset ignores the offset.
+  virtual std::optional<OffsetPrior> offset_prior() const { return std::nullopt; }
+  virtual ViscosityPrediction predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
+                                                double /*offset*/) const {
+    return predict(phi, capillary_number, viscosity_ratio);
+  }
 };
 
 }  // namespace rbcal::surrogate

@@ -6,16 +6,21 @@
 #include <cmath>
 #include <random>
 
+#include "analytic_offset_family.hpp"
 #include "analytic_viscosity_model.hpp"
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
+#include "calibration/posterior.hpp"
 #include "synthetic_sample.hpp"
 
 using namespace rbcal::calibration;
 using rbcal::calibration::test_models::AnalyticViscosityModel;
 
+// With a model sd that does not move with the parameters the likelihood's normalisation is
+// constant, so the fit is weighted least squares and exact data give the truth exactly.
 TEST(DirectFit, RecoversShearModulusFromNoiselessData) {
   AnalyticViscosityModel model;
+  model.relative_sd = 0.0;
   test_models::SyntheticDesign design;
   design.relative_measurement_sd = 0.0;
   design.add_model_noise = false;
@@ -273,4 +278,69 @@ TEST(DirectFit, DataInsideTheModelGiveNoEdgeFit) {
   EXPECT_EQ(fit.model_edge, ModelEdge::none);
   EXPECT_TRUE(fit.model_edge_reason.empty());
   EXPECT_NEAR(std::log(fit.shear_modulus / design.shear_modulus), 0.0, 4.0 * fit.ln_shear_modulus_sd);
+}
+
+// The fit is the mode of the posterior that the MCMC samples (posterior.hpp, flat in ln G_s):
+// with a model sd that grows with eta_re, least squares alone would be drawn to where the model
+// is least certain; the likelihood's normalisation (ln v_i) holds it at the mode.
+TEST(DirectFit, EstimateIsThePosteriorsMode) {
+  AnalyticViscosityModel model;
+  model.relative_sd = 0.08;
+  test_models::SyntheticDesign design;
+  design.relative_measurement_sd = 0.03;
+  std::mt19937_64 rng(17);
+  const SampleData sample = test_models::synthetic_sample(model, design, rng);  // eta0 known exactly
+  const DirectFitResult fit = fit_direct(sample, model);
+  ASSERT_TRUE(fit.converged) << fit.solver_report;
+  ASSERT_FALSE(fit.plasma_viscosity_fitted);
+  std::vector<RelativeViscosityPoint> used;
+  for (const auto& f : fit.points)
+    if (f.used) used.push_back(f.point);
+  const LogPosterior posterior(model, sample.plasma.eta0, used);
+  ASSERT_EQ(posterior.dimension(), 1);
+  double best = -1e300, best_x = 0.0;
+  for (double x = fit.estimate(0) - 0.3; x <= fit.estimate(0) + 0.3; x += 1e-4) {
+    const double v = posterior(Eigen::VectorXd::Constant(1, x));
+    if (v > best) {
+      best = v;
+      best_x = x;
+    }
+  }
+  EXPECT_NEAR(fit.estimate(0), best_x, 2e-4);
+  // and the mode is not the least-squares optimum here: the normalisation matters.
+  DirectFitOptions least_squares;
+  model.relative_sd = 0.0;
+  const double unweighted = fit_direct(sample, model, least_squares).estimate(0);
+  EXPECT_GT(std::abs(unweighted - fit.estimate(0)), 1e-3);
+}
+
+// The immersed boundary's offset c, common to every point, is a parameter with its prior: the
+// G_s interval widens as that prior widens and still covers the truth; a model without an
+// offset fits none.
+TEST(DirectFit, OffsetIsANuisanceParameterThatWidensTheInterval) {
+  const auto truth = test_models::analytic_offset_family(1.0);
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(23);
+  const SampleData sample = test_models::synthetic_sample(truth, design, rng);  // at c = 0.75
+  double last_width = 0.0;
+  for (double sd : {0.03, 0.1, 0.3}) {
+    const auto family = test_models::analytic_offset_family(1.0, 0.75, sd);
+    const DirectFitResult fit = fit_direct(sample, family);
+    ASSERT_TRUE(fit.offset_fitted);
+    ASSERT_TRUE(fit.covariance_ok) << "prior sd " << sd;
+    EXPECT_EQ(fit.parameter_names.back(), "offset_c");
+    EXPECT_GE(fit.offset, 0.45);
+    EXPECT_LE(fit.offset, 1.05);
+    const double width = std::log(fit.shear_modulus_interval.upper / fit.shear_modulus_interval.lower);
+    EXPECT_GT(width, 1.1 * last_width) << "prior sd " << sd;
+    EXPECT_LT(fit.shear_modulus_interval.lower, design.shear_modulus) << "prior sd " << sd;
+    EXPECT_GT(fit.shear_modulus_interval.upper, design.shear_modulus) << "prior sd " << sd;
+    last_width = width;
+  }
+  DirectFitOptions fixed;
+  fixed.offset_as_parameter = false;
+  const DirectFitResult at_mean = fit_direct(sample, test_models::analytic_offset_family(1.0), fixed);
+  EXPECT_FALSE(at_mean.offset_fitted);
+  EXPECT_TRUE(std::isnan(at_mean.offset));
+  EXPECT_EQ(at_mean.index_of("offset_c"), -1);
 }

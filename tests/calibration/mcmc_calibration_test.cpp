@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "analytic_offset_family.hpp"
 #include "analytic_viscosity_model.hpp"
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/predictive_bands.hpp"
@@ -146,4 +147,37 @@ TEST(McmcCalibration, RatioOfTwoSamplesShearModuli) {
   mean /= log_ratio.size();
   for (double x : log_ratio) squares += (x - mean) * (x - mean);
   EXPECT_NEAR(std::sqrt(squares / log_ratio.size()) / std::hypot(sd_a, sd_b), 1.0, 0.05);
+}
+
+// An offset the data cannot see (every member the same) keeps its prior: normal(0.75, 0.15)
+// truncated to [0.45, 1.05], whose median is 0.75 and whose 95 % central interval is
+// 0.75 -+ 1.678 x 0.15 (the 2.5 % point of a normal cut at +-2 sd: Phi^-1(Phi(-2) + 0.025 x 0.9545)).
+// An offset the data can see (slope 1) widens the G_s interval against the offset held at its mean.
+TEST(McmcCalibration, OffsetKeepsItsPriorWhenUnseenAndWidensTheIntervalWhenSeen) {
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(31);
+  const auto blind = test_models::analytic_offset_family(0.0);
+  const SampleData sample = test_models::synthetic_sample(blind, design, rng);
+  McmcCalibrationOptions options;
+  options.sampler.threads = 1;
+  const McmcCalibration unseen = calibrate_mcmc(sample, blind, options);
+  ASSERT_TRUE(unseen.mcmc.converged) << unseen.mcmc.stop_reason;
+  const int k = static_cast<int>(unseen.mcmc.parameters.size()) - 1;
+  ASSERT_EQ(unseen.mcmc.parameters[k].name, "offset_c");
+  const double ess = unseen.mcmc.parameters[k].bulk_ess;
+  ASSERT_GT(ess, 300.0);
+  const double mass = 0.9545, density_median = 0.3989 / (0.15 * mass), density_tail = 0.0975 / (0.15 * mass);
+  EXPECT_NEAR(unseen.offset_median, 0.75, 4.0 * std::sqrt(0.25 / ess) / density_median);
+  EXPECT_NEAR(unseen.offset_interval.lower, 0.75 - 1.678 * 0.15, 4.0 * std::sqrt(0.025 * 0.975 / ess) / density_tail);
+  EXPECT_NEAR(unseen.offset_interval.upper, 0.75 + 1.678 * 0.15, 4.0 * std::sqrt(0.025 * 0.975 / ess) / density_tail);
+
+  const auto seen = test_models::analytic_offset_family(1.0);
+  const SampleData seen_sample = test_models::synthetic_sample(seen, design, rng);
+  const McmcCalibration free_offset = calibrate_mcmc(seen_sample, seen, options);
+  options.posterior.offset_as_parameter = false;
+  const McmcCalibration held = calibrate_mcmc(seen_sample, seen, options);
+  ASSERT_TRUE(free_offset.mcmc.converged && held.mcmc.converged);
+  EXPECT_TRUE(std::isnan(held.offset_median));
+  const auto width = [](const Interval& i) { return std::log(i.upper / i.lower); };
+  EXPECT_GT(width(free_offset.shear_modulus_interval), 1.3 * width(held.shear_modulus_interval));
 }

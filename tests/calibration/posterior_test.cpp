@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "analytic_offset_family.hpp"
 #include "analytic_viscosity_model.hpp"
 #include "calibration/posterior.hpp"
 
@@ -105,4 +107,39 @@ TEST(Posterior, PlasmaViscosityAsNuisanceParameter) {
   const double expected_prior =
       -std::log(std::log(1e-3 / 1e-8)) - 0.5 * z * z - std::log(s) - 0.5 * std::log(2 * std::numbers::pi);
   EXPECT_NEAR(posterior.log_prior(theta), expected_prior, 1e-12);
+}
+
+// A model with the immersed boundary's offset adds c last, with the truncated normal prior
+// normalised over the family's offsets, and predicts each point at theta's c.
+TEST(Posterior, OffsetOfAFamilyHasATruncatedNormalPrior) {
+  const auto family = test_models::analytic_offset_family(1.0, 0.7, 0.2);
+  const double eta0 = 1.5e-3, g_s = 1e-6;
+  const auto data = point(0.3, 20.0, 2.4, 0.05);
+  const LogPosterior posterior(family, eta0, {data});
+  ASSERT_EQ(posterior.dimension(), 2);
+  EXPECT_EQ(posterior.offset_index(), 1);
+  EXPECT_EQ(posterior.parameter_names()[1], "offset_c");
+  Eigen::Vector2d theta(std::log(g_s), 0.3);
+  EXPECT_EQ(posterior.log_prior(theta), -std::numeric_limits<double>::infinity());  // below the first member
+  theta(1) = 1.2;
+  EXPECT_EQ(posterior.log_prior(theta), -std::numeric_limits<double>::infinity());  // beyond the last
+  // exp(log prior) integrates to 1 over c (the G_s part is the uniform density on ln G_s).
+  const double ln_range = std::log(1e-3 / 1e-8);
+  double integral = 0.0;
+  const int n = 20000;
+  for (int k = 0; k <= n; ++k) {
+    theta(1) = 0.45 + 0.6 * k / n;
+    const double w = (k == 0 || k == n) ? 0.5 : 1.0;
+    integral += w * std::exp(posterior.log_prior(theta)) * ln_range * 0.6 / n;
+  }
+  EXPECT_NEAR(integral, 1.0, 1e-6);
+  // The likelihood uses the family at theta's c.
+  theta(1) = 0.93;
+  const auto p = family.predict_at_offset(0.3, capillary_number(eta0, 20.0, kDefaultCellRadius, g_s), 5.0, 0.93);
+  const double v = 0.05 * 0.05 + p.sd * p.sd;
+  EXPECT_NEAR(posterior.log_likelihood(theta),
+              -0.5 * (std::pow(2.4 - p.eta_re, 2) / v + std::log(2.0 * std::numbers::pi * v)), 1e-12);
+  PosteriorOptions at_mean;
+  at_mean.offset_as_parameter = false;
+  EXPECT_EQ(LogPosterior(family, eta0, {data}, at_mean).dimension(), 1);
 }

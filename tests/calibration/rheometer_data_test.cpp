@@ -11,6 +11,7 @@
 #include "calibration/calibration_input.hpp"
 #include "calibration/rheometer_data.hpp"
 #include "../scratch_path.hpp"
+#include "shipped_sample_all_hematocrits.hpp"
 
 using namespace rbcal::calibration;
 namespace fs = std::filesystem;
@@ -160,5 +161,8 @@ TEST(RheometerData, TheShippedSampleReads) {
   const CalibrationInput input = read_calibration_input(RBCAL_SAMPLES_DIR "/kim2017_whole_blood.csv");
   ASSERT_EQ(input.samples.size(), 1u);
   EXPECT_TRUE(input.samples[0].plasma.assumed);
-  EXPECT_EQ(input.samples[0].points.size(), 60u);  // 20 shear rates x hematocrit 0.35, 0.45, 0.55
+  EXPECT_EQ(input.samples[0].points.size(), 40u);  // 20 shear rates x hematocrit 0.35, 0.45 (0.55 excluded)
+  for (const auto& p : input.samples[0].points) EXPECT_LT(p.phi, 0.5);
+  const CalibrationInput all = read_calibration_input(test_models::shipped_sample_with_all_hematocrits());
+  EXPECT_EQ(all.samples.at(0).points.size(), 60u);  // restored: hematocrit 0.55 too
 }

@@ -70,3 +70,16 @@ def test_the_log_posterior_is_a_callable_of_theta(python_result):
     assert lp(outside) == -np.inf
     with pytest.raises(ValueError):
         lp(theta[:-1])
+
+
+def test_a_surrogate_family_makes_the_offset_a_parameter(exe, data, surrogate, scratch):
+    family = scratch / "python_tiny_family.json"
+    subprocess.run([exe, "surrogate", "family", "--member", f"0.6={surrogate}", "--member", f"0.9={surrogate}",
+                    "-o", str(family)], check=True, capture_output=True)
+    result = rbcal.calibrate(data, str(family), method="all", mcmc_max_steps=300, chains=2, walkers=8, threads=1,
+                             min_shear_rate=0.0, seed=7)
+    name = result.samples[0]["name"]
+    assert result.parameter_names(name)[-1] == "offset_c"
+    mcmc = result.samples[0]["methods"]["mcmc"]
+    assert 0.6 <= mcmc["offset_c_interval"]["lower"] <= mcmc["offset_c"] <= mcmc["offset_c_interval"]["upper"] <= 0.9
+    assert result.samples[0]["methods"]["direct"]["offset_fitted"]

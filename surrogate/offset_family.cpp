@@ -1,0 +1,101 @@
+#include "surrogate/offset_family.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rbcal::surrogate {
+
+OffsetFamilyModel::OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd)
+    : members_(std::move(members)) {
+  if (members_.size() < 2) throw std::invalid_argument("offset family: needs at least two members");
+  for (const auto& m : members_) {
+    if (!m.model) throw std::invalid_argument("offset family: a member has no model");
+    if (!std::isfinite(m.offset)) throw std::invalid_argument("offset family: offsets must be finite");
+    if (m.model->offset_prior()) throw std::invalid_argument("offset family: a member has an offset of its own");
+  }
+  const double step = members_[1].offset - members_[0].offset;
+  if (!(step > 0.0)) throw std::invalid_argument("offset family: offsets must increase");
+  for (std::size_t i = 1; i < members_.size(); ++i) {
+    const double d = members_[i].offset - members_[i - 1].offset;
+    if (std::abs(d - step) > 1e-9 * std::max(1.0, std::abs(step)))
+      throw std::invalid_argument("offset family: offsets must be equally spaced (member " + std::to_string(i) +
+                                  " is " + std::to_string(members_[i].offset) + ")");
+  }
+  prior_.mean = prior_mean;
+  prior_.sd = prior_sd;
+  prior_.min = members_.front().offset;
+  prior_.max = members_.back().offset;
+  if (!(prior_sd > 0.0 && std::isfinite(prior_sd))) throw std::invalid_argument("offset family: prior sd must be positive");
+  if (!(prior_mean >= prior_.min && prior_mean <= prior_.max))
+    throw std::invalid_argument("offset family: prior mean must lie between the first and last offsets");
+  range_ = members_.front().model->range();
+  for (const auto& m : members_) {
+    const ParameterRange r = m.model->range();
+    range_.phi_min = std::max(range_.phi_min, r.phi_min);
+    range_.phi_max = std::min(range_.phi_max, r.phi_max);
+    range_.ca_min = std::max(range_.ca_min, r.ca_min);
+    range_.ca_max = std::min(range_.ca_max, r.ca_max);
+    range_.lambda_min = std::max(range_.lambda_min, r.lambda_min);
+    range_.lambda_max = std::min(range_.lambda_max, r.lambda_max);
+  }
+}
+
+std::vector<double> OffsetFamilyModel::weights(double offset) const {
+  const int n = static_cast<int>(members_.size());
+  const double c0 = members_.front().offset;
+  const double h = members_[1].offset - c0;
+  const double s = (offset - c0) / h;
+  const int i = std::clamp(static_cast<int>(std::floor(s)), 0, n - 2);
+  const double u = s - i;  // in [0, 1] inside the family, beyond at the ends
+  // Hermite basis on [c_i, c_{i+1}]: value = h00 y_i + h01 y_{i+1} + h (h10 m_i + h11 m_{i+1}).
+  const double h00 = (1.0 + 2.0 * u) * (1.0 - u) * (1.0 - u);
+  const double h01 = u * u * (3.0 - 2.0 * u);
+  const double h10 = u * (1.0 - u) * (1.0 - u);
+  const double h11 = -u * u * (1.0 - u);
+  std::vector<double> w(static_cast<std::size_t>(n), 0.0);
+  w[i] += h00;
+  w[i + 1] += h01;
+  // h m_k as weights on the members: central inside, one-sided at the ends.
+  auto add_slope = [&](int k, double factor) {
+    if (k == 0) {
+      w[1] += factor;
+      w[0] -= factor;
+    } else if (k == n - 1) {
+      w[n - 1] += factor;
+      w[n - 2] -= factor;
+    } else {
+      w[k + 1] += 0.5 * factor;
+      w[k - 1] -= 0.5 * factor;
+    }
+  };
+  add_slope(i, h10);
+  add_slope(i + 1, h11);
+  return w;
+}
+
+ViscosityPrediction OffsetFamilyModel::predict(double phi, double capillary_number, double viscosity_ratio) const {
+  return predict_at_offset(phi, capillary_number, viscosity_ratio, prior_.mean);
+}
+
+ViscosityPrediction OffsetFamilyModel::predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
+                                                         double offset) const {
+  const std::vector<double> w = weights(offset);
+  ViscosityPrediction out;
+  out.eta_re = out.sd = 0.0;
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    if (w[k] == 0.0) continue;
+    const ViscosityPrediction p = members_[k].model->predict(phi, capillary_number, viscosity_ratio);
+    out.eta_re += w[k] * p.eta_re;
+    out.sd += w[k] * p.sd;
+    out.d_phi += w[k] * p.d_phi;
+    out.d_ln_ca += w[k] * p.d_ln_ca;
+    out.d_ln_lambda += w[k] * p.d_ln_lambda;
+    out.inside_hull = out.inside_hull && p.inside_hull;
+  }
+  out.sd = std::max(out.sd, 0.0);  // the cubic's small negative weights cannot make it negative in practice
+  return out;
+}
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,79 @@
+#include "surrogate/offset_family_file.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "formats/field_reader.hpp"
+#include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
+#include "formats/provenance.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace rbcal::surrogate {
+
+nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>& members, double prior_mean,
+                                        double prior_sd) {
+  nlohmann::json j;
+  j["schema"] = formats::kSurrogateFamilySchema;
+  j["parameter"] = "offset c of the immersed boundary in lattice spacings: each member is the surrogate of the "
+                   "library's runs moved to their effective volume fraction at that c (rbcal library effective-phi)";
+  j["prior"] = {{"mean", prior_mean}, {"sd", prior_sd}};
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& m : members) {
+    nlohmann::json s = surrogate_to_json(m.surrogate);
+    s.erase("provenance");  // the family's own provenance covers them
+    list.push_back({{"offset", m.offset}, {"surrogate", std::move(s)}});
+  }
+  j["members"] = std::move(list);
+  j["provenance"] = formats::provenance_block();
+  return j;
+}
+
+OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std::string& source) {
+  const formats::FieldReader r(j, source);
+  if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
+  const std::string schema = r.text("schema");
+  if (schema != formats::kSurrogateFamilySchema)
+    r.fail("schema", std::string("must be \"") + formats::kSurrogateFamilySchema + "\", got \"" + schema + "\"");
+  const double mean = r.number("prior.mean");
+  const double sd = r.positive("prior.sd");
+  const nlohmann::json& list = r.require("members");
+  if (!list.is_array() || list.size() < 2) r.fail("members", "must be an array of at least two members");
+  std::vector<OffsetFamilyMember> members;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = "members." + std::to_string(i);
+    const double offset = r.number(at + ".offset");
+    auto model = std::make_shared<ViscositySurrogate>(
+        surrogate_from_json(r.require(at + ".surrogate"), source + " (" + at + ".surrogate)"));
+    members.push_back({offset, std::move(model)});
+  }
+  try {
+    return OffsetFamilyModel(std::move(members), mean, sd);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  }
+}
+
+void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
+                           const std::filesystem::path& file) {
+  std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.offset < b.offset; });
+  std::vector<OffsetFamilyMember> check;
+  for (const auto& m : members) check.push_back({m.offset, std::make_shared<ViscositySurrogate>(m.surrogate)});
+  (void)OffsetFamilyModel(std::move(check), prior_mean, prior_sd);  // refuse what could not be read back
+  formats::write_json_atomically(file, surrogate_family_to_json(members, prior_mean, prior_sd));
+}
+
+OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file) {
+  return surrogate_family_from_json(formats::read_json_file(file), file.string());
+}
+
+std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file) {
+  const nlohmann::json j = formats::read_json_file(file);
+  const std::string schema = j.is_object() && j.contains("schema") && j["schema"].is_string() ? j["schema"] : "";
+  if (schema == formats::kSurrogateFamilySchema)
+    return std::make_unique<OffsetFamilyModel>(surrogate_family_from_json(j, file.string()));
+  return std::make_unique<ViscositySurrogate>(surrogate_from_json(j, file.string()));
+}
+
+}  // namespace rbcal::surrogate

@@ -1,0 +1,38 @@
+#pragma once
+// The surrogate-family file (schema "rbcal.surrogate_family/1"): surrogates of the same runs
+// at equally spaced immersed-boundary offsets and the offset's prior, read as one
+// OffsetFamilyModel (offset_family.hpp):
+//   {"schema": "rbcal.surrogate_family/1",
+//    "parameter": "...",                       (what the offset is; informational)
+//    "prior": {"mean": 0.75, "sd": 0.15},      (lattice spacings; truncated to the members)
+//    "members": [{"offset": 0.45, "surrogate": {rbcal.surrogate/1}}, ...],
+//    "provenance": {...}}
+// load_viscosity_model reads either schema, so a calibration takes either file.
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "surrogate/offset_family.hpp"
+#include "surrogate/viscosity_surrogate.hpp"
+
+namespace rbcal::surrogate {
+
+struct SurrogateFamilyMember {
+  double offset = 0.0;
+  ViscositySurrogate surrogate;
+};
+
+nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>& members, double prior_mean,
+                                        double prior_sd);
+OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std::string& source);
+
+// Members sorted by offset; the constructor's checks (offset_family.hpp) are made before writing.
+void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
+                           const std::filesystem::path& file);
+OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file);
+
+// A surrogate (rbcal.surrogate/1) or a surrogate family (rbcal.surrogate_family/1), by its schema.
+std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file);
+
+}  // namespace rbcal::surrogate

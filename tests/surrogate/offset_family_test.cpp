@@ -1,0 +1,168 @@
+// The offset family (surrogate/offset_family.hpp): members at equally spaced offsets of the
+// immersed boundary joined by a C1 cubic in c; its file (offset_family_file.hpp) and the
+// loader that tells a family from a single surrogate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+#include "formats/json_file.hpp"
+#include "surrogate/offset_family.hpp"
+#include "surrogate/offset_family_file.hpp"
+#include "surrogate/surrogate_file.hpp"
+#include "synthetic_library.hpp"
+
+using namespace rbcal::surrogate;
+
+namespace {
+
+// A member whose prediction is a known function of its offset: eta_re = f(phi, Ca) + g(c).
+class KnownMember final : public ViscosityModel {
+ public:
+  KnownMember(double offset, double (*g)(double), ParameterRange box = {0.02, 0.6, 0.01, 3.2, 0.1, 10.0})
+      : offset_(offset), g_(g), box_(box) {}
+  ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+    ViscosityPrediction p;
+    p.eta_re = 1.0 + 2.0 * phi - 0.1 * std::log(ca) + 0.01 * lambda + g_(offset_);
+    p.sd = 0.01 + 0.02 * g_(offset_) * g_(offset_);
+    p.d_phi = 2.0;
+    p.d_ln_ca = -0.1;
+    p.d_ln_lambda = 0.01 * lambda;
+    return p;
+  }
+  ParameterRange range() const override { return box_; }
+
+ private:
+  double offset_;
+  double (*g_)(double);
+  ParameterRange box_;
+};
+
+double linear(double c) { return 0.8 - 0.6 * c; }
+double curved(double c) { return std::sin(3.0 * c); }
+
+OffsetFamilyModel family_of(double (*g)(double), std::vector<double> offsets, double mean = 0.75, double sd = 0.15) {
+  std::vector<OffsetFamilyMember> members;
+  for (double c : offsets) members.push_back({c, std::make_shared<KnownMember>(c, g)});
+  return OffsetFamilyModel(std::move(members), mean, sd);
+}
+
+}  // namespace
+
+TEST(OffsetFamily, ReproducesEveryMemberAtItsOffset) {
+  const OffsetFamilyModel f = family_of(curved, {0.45, 0.6, 0.75, 0.9, 1.05});
+  for (const auto& m : f.members()) {
+    const ViscosityPrediction expected = m.model->predict(0.3, 0.5, 5.0);
+    const ViscosityPrediction got = f.predict_at_offset(0.3, 0.5, 5.0, m.offset);
+    EXPECT_NEAR(got.eta_re, expected.eta_re, 1e-13) << "c " << m.offset;
+    EXPECT_NEAR(got.sd, expected.sd, 1e-13) << "c " << m.offset;
+  }
+  // Without an offset it predicts at the prior mean (a member here).
+  EXPECT_NEAR(f.predict(0.3, 0.5, 5.0).eta_re, f.members()[2].model->predict(0.3, 0.5, 5.0).eta_re, 1e-13);
+  const std::optional<OffsetPrior> prior = f.offset_prior();
+  ASSERT_TRUE(prior.has_value());
+  EXPECT_DOUBLE_EQ(prior->min, 0.45);
+  EXPECT_DOUBLE_EQ(prior->max, 1.05);
+}
+
+TEST(OffsetFamily, IsExactForPredictionsLinearInTheOffset) {
+  const OffsetFamilyModel f = family_of(linear, {0.45, 0.6, 0.75, 0.9, 1.05});
+  for (double c = 0.45; c <= 1.05 + 1e-12; c += 0.0137) {
+    EXPECT_NEAR(f.predict_at_offset(0.3, 0.5, 5.0, c).eta_re, KnownMember(c, linear).predict(0.3, 0.5, 5.0).eta_re,
+                1e-12)
+        << "c " << c;
+    double sum = 0.0;
+    for (double w : f.weights(c)) sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-14) << "c " << c;
+  }
+}
+
+// Catmull-Rom: the slope is continuous at the members, and a smooth g is followed to O(h^3).
+TEST(OffsetFamily, IsSmoothInTheOffsetAndConvergesToASmoothDependence) {
+  const OffsetFamilyModel f = family_of(curved, {0.45, 0.6, 0.75, 0.9, 1.05});
+  const double eps = 1e-7;
+  for (double c : {0.6, 0.75, 0.9}) {
+    const double left = (f.predict_at_offset(0.3, 0.5, 5.0, c).eta_re -
+                         f.predict_at_offset(0.3, 0.5, 5.0, c - eps).eta_re) / eps;
+    const double right = (f.predict_at_offset(0.3, 0.5, 5.0, c + eps).eta_re -
+                          f.predict_at_offset(0.3, 0.5, 5.0, c).eta_re) / eps;
+    EXPECT_NEAR(left, right, 1e-5) << "slope jumps at member c " << c;
+  }
+  // Halving the spacing cuts the largest error between interior members by about 8.
+  auto worst_interior_error = [](const OffsetFamilyModel& fam, double lo, double hi) {
+    double worst = 0.0;
+    for (double c = lo; c <= hi; c += 0.001)
+      worst = std::max(worst, std::abs(fam.predict_at_offset(0.3, 0.5, 5.0, c).eta_re -
+                                       KnownMember(c, curved).predict(0.3, 0.5, 5.0).eta_re));
+    return worst;
+  };
+  const double coarse = worst_interior_error(f, 0.6, 0.9);
+  const double fine = worst_interior_error(family_of(curved, {0.45, 0.525, 0.6, 0.675, 0.75, 0.825, 0.9, 0.975, 1.05}),
+                                           0.6, 0.9);
+  EXPECT_GT(coarse / fine, 5.0) << coarse << " " << fine;
+  EXPECT_LT(coarse, 2e-3);
+}
+
+TEST(OffsetFamily, RangeIsTheMembersCommonRange) {
+  std::vector<OffsetFamilyMember> members;
+  members.push_back({0.6, std::make_shared<KnownMember>(0.6, linear, ParameterRange{0.05, 0.62, 0.01, 3.2, 0.1, 10.0})});
+  members.push_back({0.9, std::make_shared<KnownMember>(0.9, linear, ParameterRange{0.06, 0.6, 0.02, 4.0, 0.2, 8.0})});
+  const ParameterRange r = OffsetFamilyModel(std::move(members), 0.75, 0.15).range();
+  EXPECT_DOUBLE_EQ(r.phi_min, 0.06);
+  EXPECT_DOUBLE_EQ(r.phi_max, 0.6);
+  EXPECT_DOUBLE_EQ(r.ca_min, 0.02);
+  EXPECT_DOUBLE_EQ(r.ca_max, 3.2);
+  EXPECT_DOUBLE_EQ(r.lambda_min, 0.2);
+  EXPECT_DOUBLE_EQ(r.lambda_max, 8.0);
+}
+
+TEST(OffsetFamily, RefusesWhatItCannotInterpolate) {
+  EXPECT_THROW(family_of(linear, {0.75}), std::invalid_argument);                  // one member
+  EXPECT_THROW(family_of(linear, {0.6, 0.75, 0.95}), std::invalid_argument);       // unequal spacing
+  EXPECT_THROW(family_of(linear, {0.9, 0.75, 0.6}), std::invalid_argument);        // decreasing
+  EXPECT_THROW(family_of(linear, {0.6, 0.6}), std::invalid_argument);              // repeated
+  EXPECT_THROW(family_of(linear, {0.6, 0.75, 0.9}, 1.2), std::invalid_argument);   // prior mean outside
+  EXPECT_THROW(family_of(linear, {0.6, 0.75, 0.9}, 0.75, 0.0), std::invalid_argument);  // sd 0
+  auto inner = std::make_shared<OffsetFamilyModel>(family_of(linear, {0.6, 0.9}));
+  EXPECT_THROW(OffsetFamilyModel({{0.6, inner}, {0.9, inner}}, 0.75, 0.15), std::invalid_argument);  // nested
+}
+
+TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
+  const auto dir = rbcal::surrogate::testing::fresh_temp_folder("offset_family_file");
+  std::vector<SurrogateFamilyMember> members;
+  for (unsigned k = 0; k < 3; ++k)
+    members.push_back({0.6 + 0.15 * k, ViscositySurrogate::fit(rbcal::surrogate::testing::synthetic_training_cases({}, 7 + k))});
+  save_surrogate_family(members, 0.75, 0.15, dir / "family.json");
+  save_surrogate(members[0].surrogate, dir / "single.json");
+
+  const OffsetFamilyModel loaded = load_surrogate_family(dir / "family.json");
+  ASSERT_EQ(loaded.members().size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(loaded.members()[k].offset, members[k].offset);
+    EXPECT_EQ(loaded.predict_at_offset(0.25, 0.2, 5.0, members[k].offset).eta_re,
+              members[k].surrogate.predict(0.25, 0.2, 5.0).eta_re);  // bit-identical, as a single surrogate
+  }
+  const auto any_family = load_viscosity_model(dir / "family.json");
+  ASSERT_TRUE(any_family->offset_prior().has_value());
+  EXPECT_DOUBLE_EQ(any_family->offset_prior()->sd, 0.15);
+  EXPECT_FALSE(load_viscosity_model(dir / "single.json")->offset_prior().has_value());
+
+  // A bad field inside a member is named with the member's path.
+  nlohmann::json j = rbcal::formats::read_json_file(dir / "family.json");
+  j["members"][1]["surrogate"]["training"][2]["noise_variance"] = -1.0;
+  std::ofstream(dir / "bad.json") << j.dump();
+  try {
+    load_viscosity_model(dir / "bad.json");
+    FAIL() << "a negative noise variance was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad.json (members.1.surrogate)"), std::string::npos) << what;
+    EXPECT_NE(what.find("training.2.noise_variance"), std::string::npos) << what;
+  }
+  // Unequal spacing is refused before anything is written.
+  members[2].offset = 1.2;
+  EXPECT_THROW(save_surrogate_family(members, 0.75, 0.15, dir / "unequal.json"), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(dir / "unequal.json"));
+}
