@@ -46,7 +46,8 @@ std::vector<double> OffsetFamilyModel::weights(double offset) const {
   const int n = static_cast<int>(members_.size());
   const double c0 = members_.front().offset;
   const double h = members_[1].offset - c0;
-  const double s = (offset - c0) / h;
+  double s = (offset - c0) / h;
+  if (std::abs(s - std::round(s)) < 1e-9) s = std::round(s);  // at a member: that member alone, exactly
   const int i = std::clamp(static_cast<int>(std::floor(s)), 0, n - 2);
   const double u = s - i;  // in [0, 1] inside the family, beyond at the ends
   // Hermite basis on [c_i, c_{i+1}]: value = h00 y_i + h01 y_{i+1} + h (h10 m_i + h11 m_{i+1}).

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "surrogate/offset_family_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "surrogate/trend_check.hpp"
 
@@ -69,6 +70,34 @@ TEST(ShippedSurrogate, ShowsThePhysicalTrends) {
       previous = here;
     }
   }
+}
+
+// The shipped surrogate family (the calibration's default model) holds the shipped surrogate as
+// its member at the prior mean, c = 0.75 +- 0.15 lattice spacings (docs/library.md, "The effective
+// volume fraction"), and its members move as a larger offset must: each run lands at a denser
+// phi_eff, so eta_re at a given phi falls with c (at the acceptance point phi 0.41, Ca 0.8,
+// lambda 5, and on a grid of the dense end).
+TEST(ShippedSurrogateFamily, HoldsTheShippedSurrogateAndFallsWithTheOffset) {
+  const OffsetFamilyModel family = load_surrogate_family(kLibrary / "surrogate_family.json");
+  const ViscositySurrogate shipped = load_surrogate(kLibrary / "surrogate.json");
+  const std::optional<OffsetPrior> prior = family.offset_prior();
+  ASSERT_TRUE(prior.has_value());
+  EXPECT_DOUBLE_EQ(prior->mean, 0.75);
+  EXPECT_DOUBLE_EQ(prior->sd, 0.15);
+  EXPECT_LE(prior->min, prior->mean - 2.0 * prior->sd + 1e-12);
+  EXPECT_GE(prior->max, prior->mean + 2.0 * prior->sd - 1e-12);
+  for (double phi : {0.1, 0.3, 0.5})
+    for (double ca : {0.01, 0.8, 3.2}) {
+      EXPECT_NEAR(family.predict(phi, ca, 5.0).eta_re / shipped.predict(phi, ca, 5.0).eta_re, 1.0, 1e-12)
+          << phi << " " << ca;  // the interpolation's weights at a member are exact to rounding
+      double previous = 1e300;
+      for (const auto& m : family.members()) {
+        if (phi < 0.3) continue;
+        const double eta = m.model->predict(phi, ca, 5.0).eta_re;
+        EXPECT_LT(eta, previous) << "phi " << phi << ", Ca " << ca << ", offset " << m.offset;
+        previous = eta;
+      }
+    }
 }
 
 }  // namespace
