@@ -62,9 +62,9 @@ std::string SampleReport::brief_report() const {
                   edge_note(d.model_edge).c_str());
     if (std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end())
       out += format("  lambda direct %.4g  %s\n", d.lambda, interval_text(d.lambda_interval, 1.0).c_str());
-    if (d.offset_fitted)
-      out += format("  offset c direct %.3g  %s (immersed-boundary offset, lattice spacings; nuisance)\n", d.offset,
-                    interval_text(d.offset_interval, 1.0).c_str());
+    for (const auto& n : d.nuisances)
+      out += format("  %s direct %.3g  %s (%s; prior %.3g +- %.3g)\n", n.prior.name.c_str(), n.value,
+                    interval_text(n.interval, 1.0).c_str(), n.prior.what.c_str(), n.prior.mean, n.prior.sd);
   }
   if (mcmc) {
     const auto& m = *mcmc;
@@ -72,8 +72,8 @@ std::string SampleReport::brief_report() const {
                   interval_text(m.shear_modulus_interval, kMicro).c_str(), edge_note(m.start_fit.model_edge).c_str());
     if (m.posterior.setup.fit_lambda)
       out += format("  lambda mcmc %.4g  %s\n", m.lambda_median, interval_text(m.lambda_interval, 1.0).c_str());
-    if (m.posterior.offset_as_parameter && !std::isnan(m.offset_median))
-      out += format("  offset c mcmc %.3g  %s (nuisance)\n", m.offset_median, interval_text(m.offset_interval, 1.0).c_str());
+    for (const auto& n : m.nuisances)
+      out += format("  %s mcmc %.3g  %s\n", n.prior.name.c_str(), n.value, interval_text(n.interval, 1.0).c_str());
     const auto& mc = m.mcmc;
     const auto& p = mc.parameters.front();
     out += format("  MCMC        R-hat %.4f, ESS %.0f, tau %.3g, acceptance %.2f, %d steps x %zu chains x %d walkers, %s\n",

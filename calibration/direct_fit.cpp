@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <limits>
@@ -22,7 +23,8 @@ struct FitParameters {
   double ln_shear_modulus = 0.0;
   double ln_lambda = 0.0;
   double ln_plasma_viscosity = 0.0;
-  double offset = 0.0;  // the immersed boundary's offset c (a model with one)
+  // The model's nuisance parameters (viscosity_model.hpp), as many as it has; the rest unused.
+  std::array<double, kMaxModelNuisances> nuisance{};
 };
 
 // One point at the parameters as Ceres passes them: its measured eta_re (with sd, which depends on
@@ -31,13 +33,14 @@ struct PointAtParameters {
   ViscosityObservation observation;
   RelativeViscosityPoint point;
   bool plasma_viscosity_is_parameter = false;
-  bool offset_is_parameter = false;
+  int nuisances = 0;  // how many of the nuisance blocks the model has
   std::pair<ObservedRelativeViscosity, surrogate::ViscosityPrediction> operator()(
       const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
-      const double* offset) const {
+      const double* nuisance0, const double* nuisance1) const {
     ViscosityObservation at = observation;
     at.plasma_viscosity = std::exp(ln_plasma_viscosity[0]);
-    if (offset_is_parameter) at.offset = offset[0];
+    const double* values[kMaxModelNuisances] = {nuisance0, nuisance1};
+    for (int k = 0; k < nuisances; ++k) at.nuisance.push_back(values[k][0]);
     return {observed_relative_viscosity(point, plasma_viscosity_is_parameter, at.plasma_viscosity),
             at.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]))};
   }
@@ -48,14 +51,14 @@ struct PointAtParameters {
 struct WeightedResidual {
   PointAtParameters at;
   bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
-                  const double* offset, double* residual) const {
-    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, offset);
+                  const double* nuisance0, const double* nuisance1, double* residual) const {
+    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, nuisance0, nuisance1);
     residual[0] = (measured.eta_re - p.eta_re) / std::sqrt(measured.sd * measured.sd + p.sd * p.sd);
     return std::isfinite(residual[0]);
   }
   double operator()(const FitParameters& x) const {
     double r = 0.0;
-    (*this)(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.offset, &r);
+    (*this)(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1], &r);
     return r;
   }
 };
@@ -72,8 +75,8 @@ struct LogVarianceResidual {
   double ln_reference_variance = 0.0;
   static constexpr double kShift = 10.0;
   bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
-                  const double* offset, double* residual) const {
-    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, offset);
+                  const double* nuisance0, const double* nuisance1, double* residual) const {
+    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, nuisance0, nuisance1);
     const double argument = std::log(measured.sd * measured.sd + p.sd * p.sd) - ln_reference_variance + kShift;
     if (!(argument > 0.0)) return false;
     residual[0] = std::sqrt(argument);
@@ -82,7 +85,7 @@ struct LogVarianceResidual {
 };
 
 // A Gaussian prior on one parameter written as a residual: the plateau estimate of eta0 on
-// ln eta0, the offset's prior on c.
+// ln eta0, a model nuisance's prior.
 struct GaussianPrior {
   double mean;
   double sd;
@@ -186,27 +189,30 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   const ViscosityObservation obs{&model, sample.plasma.eta0, options.setup.cell_radius};
   const surrogate::ParameterRange range = model.range();
   const bool fit_eta0 = options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample);
-  const std::optional<surrogate::OffsetPrior> offset_prior = model.offset_prior();
-  const bool fit_offset = options.offset_as_parameter && offset_prior.has_value();
+  const std::vector<surrogate::ModelNuisance> nuisances =
+      options.model_nuisances_as_parameters ? model.nuisances() : std::vector<surrogate::ModelNuisance>{};
+  if (nuisances.size() > kMaxModelNuisances)
+    throw std::invalid_argument("direct fit: the model has more than " + std::to_string(kMaxModelNuisances) +
+                                " nuisance parameters");
+  const int n_nuisances = static_cast<int>(nuisances.size());
   DirectFitResult result;
   result.plasma_viscosity_fitted = fit_eta0;
-  result.offset_fitted = fit_offset;
   result.parameter_names = {"ln_G_s"};
   if (options.setup.fit_lambda) result.parameter_names.push_back("ln_lambda");
   if (fit_eta0) result.parameter_names.push_back("ln_eta0");
-  if (fit_offset) result.parameter_names.push_back("offset_c");
+  for (const auto& n : nuisances) result.parameter_names.push_back(n.name);
   const int parameters = static_cast<int>(result.parameter_names.size());
   const int fitted_to_data = options.setup.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
 
   FitParameters x;
   x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
   x.ln_lambda = std::log(options.setup.lambda);
-  x.offset = fit_offset ? offset_prior->mean : 0.0;  // unused without an offset; Ceres needs it finite
+  for (int k = 0; k < n_nuisances; ++k) x.nuisance[k] = nuisances[k].mean;  // unused ones stay 0 (finite)
   const double ln_lambda_lo = std::log(std::max(range.lambda_min, 1e-300));
   const double ln_lambda_hi = std::log(std::max(range.lambda_max, 1e-300));
   if (options.setup.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
   std::vector<WeightedResidual> residuals;
-  for (const auto& p : sample.points) residuals.push_back({{obs, p, fit_eta0, fit_offset}});
+  for (const auto& p : sample.points) residuals.push_back({{obs, p, fit_eta0, n_nuisances}});
   x.ln_shear_modulus = scan_start(residuals, obs, sample.points, options, x);
   const double ln_gs_lo = std::log(options.shear_modulus_min), ln_gs_hi = std::log(options.shear_modulus_max);
 
@@ -253,15 +259,15 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     std::vector<ceres::ResidualBlockId> normalisation_blocks;
     for (std::size_t i = 0; i < sample.points.size(); ++i) {
       if (!used[i]) continue;
-      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1>(
+      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
           new WeightedResidual(residuals[i]));
       problem.AddResidualBlock(cost, make_loss(options), &x.ln_shear_modulus, &x.ln_lambda,
-                               &x.ln_plasma_viscosity, &x.offset);
+                               &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]);
       const auto measured = observed_relative_viscosity(sample.points[i], fit_eta0, sample.plasma.eta0);
-      auto* normalisation = new ceres::NumericDiffCostFunction<LogVarianceResidual, ceres::CENTRAL, 1, 1, 1, 1, 1>(
+      auto* normalisation = new ceres::NumericDiffCostFunction<LogVarianceResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
           new LogVarianceResidual{residuals[i].at, std::log(measured.sd * measured.sd)});
       normalisation_blocks.push_back(problem.AddResidualBlock(normalisation, nullptr, &x.ln_shear_modulus, &x.ln_lambda,
-                                                              &x.ln_plasma_viscosity, &x.offset));
+                                                              &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]));
     }
     std::vector<double*> free_blocks = {&x.ln_shear_modulus};
     problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, lo);
@@ -281,15 +287,17 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     } else {
       problem.SetParameterBlockConstant(&x.ln_plasma_viscosity);
     }
-    if (fit_offset) {
+    for (int k = 0; k < kMaxModelNuisances; ++k) {
+      if (k >= n_nuisances) {
+        problem.SetParameterBlockConstant(&x.nuisance[k]);
+        continue;
+      }
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(
-                                   new GaussianPrior{offset_prior->mean, offset_prior->sd}),
-                               nullptr, &x.offset);
-      problem.SetParameterLowerBound(&x.offset, 0, offset_prior->min);
-      problem.SetParameterUpperBound(&x.offset, 0, offset_prior->max);
-      free_blocks.push_back(&x.offset);
-    } else {
-      problem.SetParameterBlockConstant(&x.offset);
+                                   new GaussianPrior{nuisances[k].mean, nuisances[k].sd}),
+                               nullptr, &x.nuisance[k]);
+      problem.SetParameterLowerBound(&x.nuisance[k], 0, nuisances[k].min);
+      problem.SetParameterUpperBound(&x.nuisance[k], 0, nuisances[k].max);
+      free_blocks.push_back(&x.nuisance[k]);
     }
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;  // bounds need it
@@ -328,8 +336,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   result.estimate(0) = x.ln_shear_modulus;
   if (options.setup.fit_lambda) result.estimate(1) = x.ln_lambda;
   if (fit_eta0) result.estimate(result.index_of("ln_eta0")) = x.ln_plasma_viscosity;
-  if (fit_offset) result.estimate(result.index_of("offset_c")) = x.offset;
-  result.offset = fit_offset ? x.offset : std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < n_nuisances; ++k) result.estimate(result.index_of(nuisances[k].name)) = x.nuisance[k];
   result.shear_modulus = std::exp(x.ln_shear_modulus);
   result.lambda = std::exp(x.ln_lambda);
   result.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
@@ -354,12 +361,15 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       x.ln_shear_modulus - lo < bound_tolerance || hi - x.ln_shear_modulus < bound_tolerance ||
       (options.setup.fit_lambda &&
        (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance)) ||
-      (fit_offset && (x.offset - offset_prior->min < bound_tolerance || offset_prior->max - x.offset < bound_tolerance));
+      std::any_of(nuisances.begin(), nuisances.end(), [&](const surrogate::ModelNuisance& n) {
+        const double v = x.nuisance[&n - nuisances.data()];
+        return v - n.min < bound_tolerance || n.max - v < bound_tolerance;
+      });
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
   ViscosityObservation at_estimate = obs;
   at_estimate.plasma_viscosity = result.plasma_viscosity;
-  if (fit_offset) at_estimate.offset = x.offset;
+  for (int k = 0; k < n_nuisances; ++k) at_estimate.nuisance.push_back(x.nuisance[k]);
   for (std::size_t i = 0; i < sample.points.size(); ++i) {
     FittedPoint f;
     f.point = sample.points[i];
@@ -398,13 +408,12 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   } else {
     result.lambda_interval = {result.lambda, result.lambda, options.interval_level};
   }
-  if (fit_offset) {
-    const int k = result.index_of("offset_c");
-    const double sd = std::sqrt(result.covariance(k, k));
-    result.offset_interval = {std::max(offset_prior->min, x.offset - z * sd),
-                              std::min(offset_prior->max, x.offset + z * sd), options.interval_level};
-  } else {
-    result.offset_interval = {result.offset, result.offset, options.interval_level};
+  for (int k = 0; k < n_nuisances; ++k) {
+    const int i = result.index_of(nuisances[k].name);
+    const double sd = std::sqrt(result.covariance(i, i));
+    result.nuisances.push_back({nuisances[k], x.nuisance[k],
+                                {std::max(nuisances[k].min, x.nuisance[k] - z * sd),
+                                 std::min(nuisances[k].max, x.nuisance[k] + z * sd), options.interval_level}});
   }
   return result;
 }

@@ -3,9 +3,9 @@
 // model's range by weighted least squares (Ceres), with a Laplace (Gauss-Newton) covariance.
 // eta0 is by default a nuisance parameter ln eta0 with the plateau estimate as a Gaussian prior
 // (a prior residual (ln eta0 - ln eta0_hat) / (se / eta0_hat)), so that its error, common to all
-// points, reaches G_s's interval. A model with the immersed boundary's offset c (a surrogate
-// family) adds c the same way: a parameter with its prior as a residual (c - mean) / sd, bounded
-// to the family's offsets.
+// points, reaches G_s's interval. A model's nuisance parameters (a surrogate family's offset c
+// and box correction beta; viscosity_model.hpp) enter the same way: each a parameter with its
+// prior as a residual (v - mean) / sd, bounded to its prior's support.
 #include <string>
 #include <vector>
 
@@ -20,13 +20,23 @@ namespace rbcal::calibration {
 
 enum class RobustLoss { none, huber, cauchy };
 
+// The most nuisance parameters a model may have (viscosity_model.hpp): the offset and the box.
+inline constexpr int kMaxModelNuisances = 2;
+
+// A model nuisance parameter's estimate with its interval (clipped to the prior's support).
+struct NuisanceEstimate {
+  surrogate::ModelNuisance prior;
+  double value = 0.0;
+  Interval interval;
+};
+
 struct DirectFitOptions {
   ModelSetup setup;  // a, lambda (fixed, or the start when fit_lambda)
   // Fit ln eta0 with its plateau prior when the sample allows it (plasma standard error > 0 and
   // absolute viscosities on every point); otherwise eta0 is fixed and its error is in eta_re_sd.
   bool plasma_viscosity_as_parameter = true;
-  // Fit the offset c with its prior when the model has one; false: the model's prior mean.
-  bool offset_as_parameter = true;
+  // Fit the model's nuisance parameters with their priors; false: the model at their means.
+  bool model_nuisances_as_parameters = true;
   double shear_modulus_min = 1e-8;  // bounds on G_s [N/m]; ln lambda is bounded by the model's range
   double shear_modulus_max = 1e-3;
   RobustLoss loss = RobustLoss::none;
@@ -56,7 +66,7 @@ inline const char* limit_kind(ModelEdge edge) {
 }
 
 struct DirectFitResult {
-  std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0", "offset_c"
+  std::vector<std::string> parameter_names;  // "ln_G_s", then when fitted "ln_lambda", "ln_eta0", the model's nuisances
   Eigen::VectorXd estimate;                  // in that order
   Eigen::MatrixXd covariance;                // Laplace covariance of the estimate
   bool covariance_ok = false;                // false: Covariance::Compute failed (rank deficient)
@@ -75,9 +85,7 @@ struct DirectFitResult {
   int degrees_of_freedom = 0;
   double plasma_viscosity = 0.0;   // eta0 at the estimate [Pa s] (the plateau value when fixed)
   bool plasma_viscosity_fitted = false;
-  bool offset_fitted = false;
-  double offset = 0.0;      // c at the estimate (NaN when the model has none)
-  Interval offset_interval;  // normal interval on c, clipped to the prior's support
+  std::vector<NuisanceEstimate> nuisances;  // the model's nuisance parameters, as fitted
   std::vector<FittedPoint> points;
   std::vector<std::string> messages;
   std::string solver_report;  // Ceres' brief report of the last solve

@@ -24,7 +24,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   DirectFitOptions fit_options = options.start_fit;
   fit_options.setup = options.posterior.setup;
   fit_options.plasma_viscosity_as_parameter = options.posterior.plasma_viscosity_as_parameter;
-  fit_options.offset_as_parameter = options.posterior.offset_as_parameter;
+  fit_options.model_nuisances_as_parameters = options.posterior.model_nuisances_as_parameters;
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
   out.start_fit = fit_direct(sample, model, fit_options);
@@ -59,12 +59,12 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
     start.center(posterior.discrepancy_index()) = std::log(options.posterior.discrepancy_prior_median);
     start.scale(posterior.discrepancy_index()) = 0.3 * options.posterior.discrepancy_prior_log_sd;
   }
-  if (posterior.offset_index() >= 0) {
-    const int k = out.start_fit.index_of("offset_c");
-    const surrogate::OffsetPrior prior = *model.offset_prior();
-    start.center(posterior.offset_index()) = k >= 0 ? out.start_fit.offset : prior.mean;
-    start.scale(posterior.offset_index()) =
-        k >= 0 && out.start_fit.covariance_ok ? std::sqrt(out.start_fit.covariance(k, k)) : 0.3 * prior.sd;
+  for (std::size_t k = 0; k < posterior.nuisances().size(); ++k) {
+    const surrogate::ModelNuisance& n = posterior.nuisances()[k];
+    const int p = posterior.nuisance_index() + static_cast<int>(k);
+    const int i = out.start_fit.index_of(n.name);
+    start.center(p) = i >= 0 ? out.start_fit.estimate(i) : n.mean;
+    start.scale(p) = i >= 0 && out.start_fit.covariance_ok ? std::sqrt(out.start_fit.covariance(i, i)) : 0.3 * n.sd;
   }
   for (int p = 0; p < d; ++p)
     if (!(start.scale(p) > 0.0) || !std::isfinite(start.scale(p))) start.scale(p) = 0.1;
@@ -92,9 +92,9 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
     out.plasma_viscosity_median = sample.plasma.eta0;
     out.plasma_viscosity_interval = {sample.plasma.eta0, sample.plasma.eta0, options.sampler.interval_level};
   }
-  if (posterior.offset_index() >= 0) {
-    out.offset_median = summaries[posterior.offset_index()].median;
-    out.offset_interval = summaries[posterior.offset_index()].interval;
+  for (std::size_t k = 0; k < posterior.nuisances().size(); ++k) {
+    const ParameterSummary& p = summaries[posterior.nuisance_index() + static_cast<int>(k)];
+    out.nuisances.push_back({posterior.nuisances()[k], p.median, p.interval});
   }
   return out;
 }

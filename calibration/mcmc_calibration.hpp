@@ -2,7 +2,6 @@
 // The `mcmc` method for one sample: the direct fit gives the start point and the points inside the
 // model's range; the posterior (posterior.hpp) over those points is sampled with several
 // stretch-move ensembles until converged (mcmc_sampling.hpp).
-#include <limits>
 #include <vector>
 
 #include "calibration/calibration_input.hpp"
@@ -35,8 +34,7 @@ struct McmcCalibration {
   Interval discrepancy_interval;
   double plasma_viscosity_median = 0.0;  // eta0 [Pa s] (the plateau estimate when fixed)
   Interval plasma_viscosity_interval;
-  double offset_median = std::numeric_limits<double>::quiet_NaN();  // c (NaN without it)
-  Interval offset_interval;
+  std::vector<NuisanceEstimate> nuisances;  // the model's nuisance parameters: median, credible interval
   std::vector<double> shear_modulus_draws() const;  // exp(ln G_s) of every post-burn-in draw [N/m]
 };
 

@@ -39,25 +39,27 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
     plasma_viscosity_index_ = static_cast<int>(names_.size());
     names_.push_back("ln_eta0");
   }
-  if (const auto prior = model.offset_prior(); prior && options_.offset_as_parameter) {
-    offset_prior_ = *prior;
+  if (options_.model_nuisances_as_parameters) nuisances_ = model.nuisances();
+  if (!nuisances_.empty()) nuisance_index_ = static_cast<int>(names_.size());
+  for (const auto& n : nuisances_) {
     // Truncated normal: ln(sd sqrt(2 pi) (Phi(b) - Phi(a))).
     const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); };
-    const double mass = cdf((prior->max - prior->mean) / prior->sd) - cdf((prior->min - prior->mean) / prior->sd);
-    offset_log_normaliser_ = std::log(prior->sd * std::sqrt(2.0 * std::numbers::pi) * mass);
-    offset_index_ = static_cast<int>(names_.size());
-    names_.push_back("offset_c");
+    const double mass = cdf((n.max - n.mean) / n.sd) - cdf((n.min - n.mean) / n.sd);
+    nuisance_log_normalisers_.push_back(std::log(n.sd * std::sqrt(2.0 * std::numbers::pi) * mass));
+    names_.push_back(n.name);
   }
 }
 
-double LogPosterior::offset(const Eigen::VectorXd& theta) const {
-  return offset_index_ >= 0 ? theta(offset_index_) : std::numeric_limits<double>::quiet_NaN();
+std::vector<double> LogPosterior::nuisance_values(const Eigen::VectorXd& theta) const {
+  std::vector<double> values;
+  for (std::size_t k = 0; k < nuisances_.size(); ++k) values.push_back(theta(nuisance_index_ + static_cast<int>(k)));
+  return values;
 }
 
 ViscosityObservation LogPosterior::observation_at(const Eigen::VectorXd& theta) const {
   ViscosityObservation at = observation_;
   at.plasma_viscosity = plasma_viscosity(theta);
-  at.offset = offset(theta);
+  at.nuisance = nuisance_values(theta);
   return at;
 }
 
@@ -96,11 +98,12 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
     if (!std::isfinite(z)) return minus_infinity;
     log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
   }
-  if (offset_index_ >= 0) {
-    const double c = theta(offset_index_);
-    if (!(c >= offset_prior_.min && c <= offset_prior_.max)) return minus_infinity;
-    const double z = (c - offset_prior_.mean) / offset_prior_.sd;
-    log_p += -0.5 * z * z - offset_log_normaliser_;
+  for (std::size_t k = 0; k < nuisances_.size(); ++k) {
+    const surrogate::ModelNuisance& n = nuisances_[k];
+    const double v = theta(nuisance_index_ + static_cast<int>(k));
+    if (!(v >= n.min && v <= n.max)) return minus_infinity;
+    const double z = (v - n.mean) / n.sd;
+    log_p += -0.5 * z * z - nuisance_log_normalisers_[k];
   }
   return log_p;
 }

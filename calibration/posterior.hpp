@@ -1,5 +1,6 @@
 #pragma once
-// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0] [, c]) for one sample.
+// Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0] [, model nuisances])
+// for one sample.
 //
 // Likelihood (independent Gaussian errors on eta_re):
 //   eta_re_i ~ N(m_i, v_i),  m_i = model eta_re(phi_i, Ca_i(G_s), lambda),
@@ -13,6 +14,9 @@
 //   ln lambda  ~ uniform on [ln lambda_min, ln lambda_max], by default the model's lambda range
 //   ln sigma_d ~ normal(ln discrepancy_prior_median, discrepancy_prior_log_sd)  (weakly informative)
 //   ln eta0    ~ normal(ln eta0_hat, se(eta0_hat) / eta0_hat)  (the plasma plateau's estimate)
+//   each of the model's nuisance parameters (surrogate/viscosity_model.hpp; a surrogate family's
+//                offset c and box correction beta) ~ its prior, normal(mean, sd) truncated to
+//                [min, max]: one number common to every point, so its error reaches G_s in full
 #include <string>
 #include <vector>
 
@@ -40,8 +44,8 @@ struct PosteriorOptions {
   bool reject_outside_model_range = false;
   // Add ln eta0 when possible: eta0's standard error > 0 and every point has its viscosity.
   bool plasma_viscosity_as_parameter = true;
-  // Add the offset c when the model has one; false: the model predicts at its prior mean.
-  bool offset_as_parameter = true;
+  // Add the model's nuisance parameters; false: the model predicts at their means.
+  bool model_nuisances_as_parameters = true;
 };
 
 class LogPosterior {
@@ -56,13 +60,15 @@ class LogPosterior {
   int lambda_index() const { return lambda_index_; }            // -1 when lambda is fixed
   int discrepancy_index() const { return discrepancy_index_; }  // -1 without sigma_d
   int plasma_viscosity_index() const { return plasma_viscosity_index_; }  // -1 with eta0 fixed
-  int offset_index() const { return offset_index_; }  // -1 without the offset
+  // Index of the first model nuisance (they follow in the model's order), -1 without them.
+  int nuisance_index() const { return nuisance_index_; }
+  const std::vector<surrogate::ModelNuisance>& nuisances() const { return nuisances_; }
 
   double lambda(const Eigen::VectorXd& theta) const;
   double discrepancy(const Eigen::VectorXd& theta) const;  // sigma_d (0 without it)
   double plasma_viscosity(const Eigen::VectorXd& theta) const;  // eta0 [Pa s]
-  double offset(const Eigen::VectorXd& theta) const;  // c; NaN without it (the model's own choice)
-  // The observation at theta: eta0 and the offset set.
+  std::vector<double> nuisance_values(const Eigen::VectorXd& theta) const;  // empty without them
+  // The observation at theta: eta0 and the model's nuisance values set.
   ViscosityObservation observation_at(const Eigen::VectorXd& theta) const;
 
   double log_prior(const Eigen::VectorXd& theta) const;       // -inf outside the support
@@ -81,9 +87,9 @@ class LogPosterior {
   int lambda_index_ = -1;
   int discrepancy_index_ = -1;
   int plasma_viscosity_index_ = -1;
-  int offset_index_ = -1;
-  surrogate::OffsetPrior offset_prior_;
-  double offset_log_normaliser_ = 0.0;
+  int nuisance_index_ = -1;
+  std::vector<surrogate::ModelNuisance> nuisances_;
+  std::vector<double> nuisance_log_normalisers_;
   double plasma_viscosity_standard_error_ = 0.0;
 };
 

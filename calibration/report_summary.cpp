@@ -68,6 +68,17 @@ json alpha_json(const AlphaMethodResult& a) {
   return j;
 }
 
+// The model's nuisance parameters by name: value (estimate or posterior median), interval, prior.
+json nuisances_json(const std::vector<NuisanceEstimate>& list) {
+  json j = json::object();
+  for (const NuisanceEstimate& n : list)
+    j[n.prior.name] = {{"value", n.value},
+                       {"interval", interval_json(n.interval, 1.0)},
+                       {"what", n.prior.what},
+                       {"prior", {{"mean", n.prior.mean}, {"sd", n.prior.sd}, {"min", n.prior.min}, {"max", n.prior.max}}}};
+  return j;
+}
+
 json direct_json(const DirectFitResult& d) {
   json j = {{"G_s_uN_per_m", kMicro * d.shear_modulus},
             {"interval_uN_per_m", interval_json(d.shear_modulus_interval, kMicro)},
@@ -89,11 +100,7 @@ json direct_json(const DirectFitResult& d) {
       std::find(d.parameter_names.begin(), d.parameter_names.end(), "ln_lambda") != d.parameter_names.end();
   j["lambda_fitted"] = lambda_fitted;
   if (lambda_fitted) j["lambda_interval"] = interval_json(d.lambda_interval, 1.0);
-  j["offset_fitted"] = d.offset_fitted;
-  if (d.offset_fitted) {
-    j["offset_c"] = d.offset;
-    j["offset_c_interval"] = interval_json(d.offset_interval, 1.0);
-  }
+  j["model_nuisances"] = nuisances_json(d.nuisances);
   return j;
 }
 
@@ -108,10 +115,7 @@ json mcmc_json(const McmcCalibration& m) {
             {"eta0_interval_mPa_s", interval_json(m.plasma_viscosity_interval, kMilli)},
             {"points_in_likelihood", m.points.size()}};
   if (m.posterior.setup.fit_lambda) j["lambda_interval"] = interval_json(m.lambda_interval, 1.0);
-  if (!std::isnan(m.offset_median)) {
-    j["offset_c"] = m.offset_median;
-    j["offset_c_interval"] = interval_json(m.offset_interval, 1.0);
-  }
+  j["model_nuisances"] = nuisances_json(m.nuisances);
   if (m.posterior.fit_discrepancy) {
     j["sigma_d"] = m.discrepancy_median;
     j["sigma_d_interval"] = interval_json(m.discrepancy_interval, 1.0);

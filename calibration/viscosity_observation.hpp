@@ -2,7 +2,7 @@
 // The model's prediction for one measured point at given (G_s, lambda): the bridge between
 // physical shear rates and the dimensionless model, shared by the direct fit and the posterior.
 #include <cmath>
-#include <limits>
+#include <vector>
 
 #include "calibration/calibration_input.hpp"
 #include "calibration/capillary_number.hpp"
@@ -39,8 +39,8 @@ struct ViscosityObservation {
   const surrogate::ViscosityModel* model = nullptr;
   double plasma_viscosity = 0.0;            // eta0 [Pa s]
   double cell_radius = kDefaultCellRadius;  // a [m]
-  // The immersed boundary's offset at which a model with one predicts; NaN: its prior mean.
-  double offset = std::numeric_limits<double>::quiet_NaN();
+  // Values of the model's nuisance parameters (surrogate/viscosity_model.hpp); empty: their means.
+  std::vector<double> nuisance;
 
   double capillary_number_at(const RelativeViscosityPoint& point, double shear_modulus) const {
     return capillary_number(plasma_viscosity, point.shear_rate, cell_radius, shear_modulus);
@@ -48,8 +48,8 @@ struct ViscosityObservation {
   surrogate::ViscosityPrediction predict(const RelativeViscosityPoint& point, double shear_modulus,
                                          double lambda) const {
     const double ca = capillary_number_at(point, shear_modulus);
-    return std::isnan(offset) ? model->predict(point.phi, ca, lambda)
-                              : model->predict_at_offset(point.phi, ca, lambda, offset);
+    return nuisance.empty() ? model->predict(point.phi, ca, lambda)
+                            : model->predict_with(point.phi, ca, lambda, nuisance);
   }
   // Whether the point's (phi, Ca, lambda) lies in the box the model was built on.
   bool inside_range(const RelativeViscosityPoint& point, double shear_modulus, double lambda) const {

@@ -37,6 +37,8 @@ struct SurrogatePredictOptions {
 struct SurrogateFamilyOptions {
   std::vector<std::string> members;  // OFFSET=FILE
   double prior_mean = 0.75, prior_sd = 0.15;
+  double box_mean = std::nan(""), box_sd = std::nan("");  // the box correction's prior (both or neither)
+  std::string box_source;
   std::string output;
 };
 
@@ -81,19 +83,23 @@ void run_build(const SurrogateBuildOptions& o) {
 void run_predict(const SurrogatePredictOptions& o) {
   const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
   const surrogate::ViscosityModel& s = *model;
-  const std::optional<surrogate::OffsetPrior> prior = s.offset_prior();
-  if (!std::isnan(o.offset) && !prior)
+  const std::vector<surrogate::ModelNuisance> nuisances = s.nuisances();
+  if (!std::isnan(o.offset) && nuisances.empty())
     throw CLI::ValidationError("--offset", o.surrogate + " is a single surrogate, not a family with an offset");
-  const double offset = std::isnan(o.offset) && prior ? prior->mean : o.offset;
-  if (prior && !(offset >= prior->min && offset <= prior->max))
-    throw CLI::ValidationError("--offset", "must lie within the family's offsets " + std::to_string(prior->min) +
-                                               " .. " + std::to_string(prior->max));
-  const surrogate::ViscosityPrediction p = prior ? s.predict_at_offset(o.phi, o.ca, o.lambda, offset)
-                                                 : s.predict(o.phi, o.ca, o.lambda);
+  std::vector<double> values;
+  for (const auto& n : nuisances) values.push_back(n.mean);
+  if (!nuisances.empty() && !std::isnan(o.offset)) {
+    const surrogate::ModelNuisance& c = nuisances.front();  // the family's offset
+    if (!(o.offset >= c.min && o.offset <= c.max))
+      throw CLI::ValidationError("--offset", "must lie within the family's offsets " + std::to_string(c.min) + " .. " +
+                                                 std::to_string(c.max));
+    values.front() = o.offset;
+  }
+  const surrogate::ViscosityPrediction p = s.predict_with(o.phi, o.ca, o.lambda, values);
   std::printf("phi %.4g, Ca %.4g, lambda %.4g\n", o.phi, o.ca, o.lambda);
-  if (prior)
-    std::printf("  offset c            %.4g (family prior %.4g +- %.4g, members %.4g .. %.4g)\n", offset, prior->mean,
-                prior->sd, prior->min, prior->max);
+  for (std::size_t k = 0; k < nuisances.size(); ++k)
+    std::printf("  %-19s %.4g (%s; prior %.4g +- %.4g, %.4g .. %.4g)\n", nuisances[k].name.c_str(), values[k],
+                nuisances[k].what.c_str(), nuisances[k].mean, nuisances[k].sd, nuisances[k].min, nuisances[k].max);
   std::printf("  eta_re              %.6g +- %.3g (1 sd, surrogate uncertainty)\n", p.eta_re, p.sd);
   std::printf("  d eta_re / d phi    %.6g\n", p.d_phi);
   std::printf("  d eta_re / d ln Ca  %.6g\n", p.d_ln_ca);
@@ -122,12 +128,22 @@ void run_family(const SurrogateFamilyOptions& o) {
     }
     members.push_back({offset, surrogate::load_surrogate(m.substr(eq + 1))});
   }
-  surrogate::save_surrogate_family(members, o.prior_mean, o.prior_sd, o.output);
+  std::optional<surrogate::BoxCorrectionRecord> box;
+  if (std::isnan(o.box_mean) != std::isnan(o.box_sd))
+    throw CLI::ValidationError("--box-mean/--box-sd", "give both or neither");
+  if (!std::isnan(o.box_mean)) {
+    if (o.box_source.empty()) throw CLI::ValidationError("--box-source", "say where the box correction's numbers come from");
+    box = surrogate::BoxCorrectionRecord{{o.box_mean, o.box_sd}, o.box_source};
+  }
+  surrogate::save_surrogate_family(members, o.prior_mean, o.prior_sd, o.output, box);
   const surrogate::OffsetFamilyModel family = surrogate::load_surrogate_family(o.output);
   std::printf("rbcal surrogate family: %zu members -> %s\n", family.members().size(), o.output.c_str());
   const surrogate::ParameterRange r = family.range();
   std::printf("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", o.prior_mean,
               o.prior_sd, family.members().front().offset, family.members().back().offset);
+  if (box)
+    std::printf("  box correction      beta normal(%.4g, %.4g) truncated to -0.5 .. 1 (%s)\n", box->prior.mean,
+                box->prior.sd, box->source.c_str());
   std::printf("  common range        phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
               r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
   std::printf("  phi 0.41, Ca 0.8, lambda 5 (eta_re per member):");
@@ -170,6 +186,10 @@ void add_surrogate_command(CLI::App& app) {
   family->add_option("--member", f->members, "OFFSET=SURROGATE_FILE (at least two, equally spaced offsets)")
       ->required();
   family->add_option("--prior-mean", f->prior_mean, "Prior mean of c [lattice spacings]")->capture_default_str();
+  family->add_option("--box-mean", f->box_mean,
+                     "Box correction beta's prior mean, ln eta_bulk = (1 + beta) ln eta_re (with --box-sd, --box-source)");
+  family->add_option("--box-sd", f->box_sd, "Box correction's prior sd")->check(CLI::PositiveNumber);
+  family->add_option("--box-source", f->box_source, "Where the box correction's numbers come from (kept in the file)");
   family->add_option("--prior-sd", f->prior_sd, "Prior sd of c (truncated to the members' offsets)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -7,13 +7,21 @@
 
 namespace rbcal::surrogate {
 
-OffsetFamilyModel::OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd)
-    : members_(std::move(members)) {
+namespace {
+
+constexpr double kBoxMin = -0.5, kBoxMax = 1.0;  // the box correction's truncation
+
+}  // namespace
+
+OffsetFamilyModel::OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd,
+                                     std::optional<BoxCorrectionPrior> box)
+    : members_(std::move(members)), box_(box) {
   if (members_.size() < 2) throw std::invalid_argument("offset family: needs at least two members");
   for (const auto& m : members_) {
     if (!m.model) throw std::invalid_argument("offset family: a member has no model");
     if (!std::isfinite(m.offset)) throw std::invalid_argument("offset family: offsets must be finite");
-    if (m.model->offset_prior()) throw std::invalid_argument("offset family: a member has an offset of its own");
+    if (!m.model->nuisances().empty())
+      throw std::invalid_argument("offset family: a member has nuisance parameters of its own");
   }
   const double step = members_[1].offset - members_[0].offset;
   if (!(step > 0.0)) throw std::invalid_argument("offset family: offsets must increase");
@@ -23,13 +31,13 @@ OffsetFamilyModel::OffsetFamilyModel(std::vector<OffsetFamilyMember> members, do
       throw std::invalid_argument("offset family: offsets must be equally spaced (member " + std::to_string(i) +
                                   " is " + std::to_string(members_[i].offset) + ")");
   }
-  prior_.mean = prior_mean;
-  prior_.sd = prior_sd;
-  prior_.min = members_.front().offset;
-  prior_.max = members_.back().offset;
+  offset_ = {"offset_c", "immersed-boundary offset, lattice spacings", prior_mean, prior_sd, members_.front().offset,
+             members_.back().offset};
   if (!(prior_sd > 0.0 && std::isfinite(prior_sd))) throw std::invalid_argument("offset family: prior sd must be positive");
-  if (!(prior_mean >= prior_.min && prior_mean <= prior_.max))
+  if (!(prior_mean >= offset_.min && prior_mean <= offset_.max))
     throw std::invalid_argument("offset family: prior mean must lie between the first and last offsets");
+  if (box_ && !(box_->sd > 0.0 && std::isfinite(box_->sd) && box_->mean > kBoxMin && box_->mean < kBoxMax))
+    throw std::invalid_argument("offset family: the box correction's prior needs sd > 0 and a mean in (-0.5, 1)");
   range_ = members_.front().model->range();
   for (const auto& m : members_) {
     const ParameterRange r = m.model->range();
@@ -76,8 +84,38 @@ std::vector<double> OffsetFamilyModel::weights(double offset) const {
   return w;
 }
 
+std::vector<ModelNuisance> OffsetFamilyModel::nuisances() const {
+  std::vector<ModelNuisance> list{offset_};
+  if (box_)
+    list.push_back({"box_beta", "box correction, ln eta_bulk = (1 + beta) ln eta_re", box_->mean, box_->sd, kBoxMin,
+                    kBoxMax});
+  return list;
+}
+
 ViscosityPrediction OffsetFamilyModel::predict(double phi, double capillary_number, double viscosity_ratio) const {
-  return predict_at_offset(phi, capillary_number, viscosity_ratio, prior_.mean);
+  const ViscosityPrediction p = predict_at_offset(phi, capillary_number, viscosity_ratio, offset_.mean);
+  return box_ ? with_box_correction(p, box_->mean) : p;
+}
+
+ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary_number, double viscosity_ratio,
+                                                    const std::vector<double>& values) const {
+  if (values.size() != (box_ ? 2u : 1u))
+    throw std::invalid_argument("offset family: expected " + std::to_string(box_ ? 2 : 1) + " nuisance value(s), got " +
+                                std::to_string(values.size()));
+  const ViscosityPrediction p = predict_at_offset(phi, capillary_number, viscosity_ratio, values[0]);
+  return box_ ? with_box_correction(p, values[1]) : p;
+}
+
+ViscosityPrediction with_box_correction(const ViscosityPrediction& p, double beta) {
+  // eta' = eta^(1 + beta): d eta' / d eta = (1 + beta) eta^beta.
+  ViscosityPrediction q = p;
+  q.eta_re = std::pow(p.eta_re, 1.0 + beta);
+  const double slope = (1.0 + beta) * q.eta_re / p.eta_re;
+  q.sd = slope * p.sd;
+  q.d_phi = slope * p.d_phi;
+  q.d_ln_ca = slope * p.d_ln_ca;
+  q.d_ln_lambda = slope * p.d_ln_lambda;
+  return q;
 }
 
 ViscosityPrediction OffsetFamilyModel::predict_at_offset(double phi, double capillary_number, double viscosity_ratio,

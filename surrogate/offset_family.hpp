@@ -1,18 +1,25 @@
 #pragma once
-// A viscosity model with the immersed boundary's offset c as a nuisance parameter: one model per
-// offset (each built from the same runs moved to their effective volume fraction at that c,
-// `rbcal library effective-phi --offset C`), interpolated in c, with a prior on c.
+// A viscosity model with the library's two systematic unknowns as nuisance parameters
+// (viscosity_model.hpp, ModelNuisance):
+// - the immersed boundary's offset c: one model per offset (each built from the same runs moved
+//   to their effective volume fraction at that c, `rbcal library effective-phi --offset C`),
+//   interpolated in c, with a prior on c;
+// - optionally the box correction beta: ln eta_bulk = (1 + beta) ln eta_re, with a prior from
+//   runs of the same points in a taller box (docs/library.md). ln eta_re grows about as
+//   alpha phi, so beta rescales alpha: a bias that vanishes in the dilute limit, as the wall
+//   layering that causes it does.
 //
-// Why: the offset is one number common to every run, so its uncertainty shifts the whole
-// surface together. Entered in each run's sd it would average away over a sample's points; as
-// a parameter of the calibration it reaches G_s's interval in full (docs/calibration.md).
+// Why parameters: each is one number common to every run, so its uncertainty shifts the whole
+// surface together. Entered in each run's sd it would average away over a sample's points; as a
+// parameter of the calibration it reaches G_s's interval in full (docs/calibration.md).
 //
-// Interpolation: members at equally spaced offsets c_0 < ... < c_n; between c_i and c_{i+1} a
-// cubic Hermite (Catmull-Rom) of the members' predictions, with central-difference slopes
+// Interpolation in c: members at equally spaced offsets c_0 < ... < c_n; between c_i and c_{i+1}
+// a cubic Hermite (Catmull-Rom) of the members' predictions, with central-difference slopes
 // inside and one-sided ones at the ends: continuous with a continuous first derivative in c,
 // exact at the members and for predictions linear in c. Beyond the ends the end cubic goes on
 // (only a derivative step leaves [c_0, c_n]: the prior is truncated there).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "surrogate/viscosity_model.hpp"
@@ -24,30 +31,47 @@ struct OffsetFamilyMember {
   std::shared_ptr<const ViscosityModel> model;
 };
 
+// The box correction's prior: normal(mean, sd), truncated to [-0.5, 1] (a factor on ln eta_re
+// between 0.5 and 2, far wider than any measured).
+struct BoxCorrectionPrior {
+  double mean = 0.0, sd = 0.0;
+};
+
 class OffsetFamilyModel final : public ViscosityModel {
  public:
   // Throws std::invalid_argument unless there are at least two members at strictly increasing,
-  // equally spaced offsets (relative tolerance 1e-9), none of which has an offset itself, and
-  // the prior has sd > 0 with its mean inside [first, last] offset. prior.min and max are set
-  // to the first and last offsets.
-  OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd);
+  // equally spaced offsets (relative tolerance 1e-9), none of which has nuisance parameters
+  // itself, the offset's prior has sd > 0 with its mean inside [first, last] offset (min and
+  // max are the first and last offsets), and a box prior, if any, has sd > 0 and its mean
+  // inside its truncation.
+  OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd,
+                    std::optional<BoxCorrectionPrior> box = std::nullopt);
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
-  ViscosityPrediction predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
-                                        double offset) const override;
+  // values: c, then beta when the family has a box correction.
+  ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
+                                   const std::vector<double>& values) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }
-  std::optional<OffsetPrior> offset_prior() const override { return prior_; }
+  std::vector<ModelNuisance> nuisances() const override;
 
+  ViscosityPrediction predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
+                                        double offset) const;
   const std::vector<OffsetFamilyMember>& members() const { return members_; }
+  const ModelNuisance& offset_prior() const { return offset_; }
+  const std::optional<BoxCorrectionPrior>& box_correction() const { return box_; }
 
   // The interpolation's weight of each member at offset c (they sum to 1).
   std::vector<double> weights(double offset) const;
 
  private:
   std::vector<OffsetFamilyMember> members_;
-  OffsetPrior prior_;
+  ModelNuisance offset_;
+  std::optional<BoxCorrectionPrior> box_;
   ParameterRange range_;
 };
+
+// ln eta -> (1 + beta) ln eta, with sd and derivatives carried by the chain rule.
+ViscosityPrediction with_box_correction(const ViscosityPrediction& p, double beta);
 
 }  // namespace rbcal::surrogate

@@ -13,12 +13,13 @@
 namespace rbcal::surrogate {
 
 nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>& members, double prior_mean,
-                                        double prior_sd) {
+                                        double prior_sd, const std::optional<BoxCorrectionRecord>& box) {
   nlohmann::json j;
   j["schema"] = formats::kSurrogateFamilySchema;
   j["parameter"] = "offset c of the immersed boundary in lattice spacings: each member is the surrogate of the "
                    "library's runs moved to their effective volume fraction at that c (rbcal library effective-phi)";
   j["prior"] = {{"mean", prior_mean}, {"sd", prior_sd}};
+  if (box) j["box_correction"] = {{"mean", box->prior.mean}, {"sd", box->prior.sd}, {"source", box->source}};
   nlohmann::json list = nlohmann::json::array();
   for (const auto& m : members) {
     nlohmann::json s = surrogate_to_json(m.surrogate);
@@ -38,6 +39,8 @@ OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std:
     r.fail("schema", std::string("must be \"") + formats::kSurrogateFamilySchema + "\", got \"" + schema + "\"");
   const double mean = r.number("prior.mean");
   const double sd = r.positive("prior.sd");
+  std::optional<BoxCorrectionPrior> box;
+  if (r.find("box_correction")) box = BoxCorrectionPrior{r.number("box_correction.mean"), r.positive("box_correction.sd")};
   const nlohmann::json& list = r.require("members");
   if (!list.is_array() || list.size() < 2) r.fail("members", "must be an array of at least two members");
   std::vector<OffsetFamilyMember> members;
@@ -49,19 +52,20 @@ OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std:
     members.push_back({offset, std::move(model)});
   }
   try {
-    return OffsetFamilyModel(std::move(members), mean, sd);
+    return OffsetFamilyModel(std::move(members), mean, sd, box);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(source + ": " + e.what());
   }
 }
 
 void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
-                           const std::filesystem::path& file) {
+                           const std::filesystem::path& file, const std::optional<BoxCorrectionRecord>& box) {
   std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.offset < b.offset; });
   std::vector<OffsetFamilyMember> check;
   for (const auto& m : members) check.push_back({m.offset, std::make_shared<ViscositySurrogate>(m.surrogate)});
-  (void)OffsetFamilyModel(std::move(check), prior_mean, prior_sd);  // refuse what could not be read back
-  formats::write_json_atomically(file, surrogate_family_to_json(members, prior_mean, prior_sd));
+  (void)OffsetFamilyModel(std::move(check), prior_mean, prior_sd,  // refuse what could not be read back
+                          box ? std::optional<BoxCorrectionPrior>(box->prior) : std::nullopt);
+  formats::write_json_atomically(file, surrogate_family_to_json(members, prior_mean, prior_sd, box));
 }
 
 OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file) {

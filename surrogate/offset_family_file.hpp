@@ -5,11 +5,14 @@
 //   {"schema": "rbcal.surrogate_family/1",
 //    "parameter": "...",                       (what the offset is; informational)
 //    "prior": {"mean": 0.75, "sd": 0.15},      (lattice spacings; truncated to the members)
+//    "box_correction": {"mean": ..., "sd": ..., "source": "..."},   (optional; beta)
 //    "members": [{"offset": 0.45, "surrogate": {rbcal.surrogate/1}}, ...],
 //    "provenance": {...}}
 // load_viscosity_model reads either schema, so a calibration takes either file.
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <string>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -23,13 +26,19 @@ struct SurrogateFamilyMember {
   ViscositySurrogate surrogate;
 };
 
+// The box correction's prior and where its numbers come from (kept in the file).
+struct BoxCorrectionRecord {
+  BoxCorrectionPrior prior;
+  std::string source;
+};
+
 nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>& members, double prior_mean,
-                                        double prior_sd);
+                                        double prior_sd, const std::optional<BoxCorrectionRecord>& box = std::nullopt);
 OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std::string& source);
 
 // Members sorted by offset; the constructor's checks (offset_family.hpp) are made before writing.
 void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
-                           const std::filesystem::path& file);
+                           const std::filesystem::path& file, const std::optional<BoxCorrectionRecord>& box = std::nullopt);
 OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file);
 
 // A surrogate (rbcal.surrogate/1) or a surrogate family (rbcal.surrogate_family/1), by its schema.

@@ -4,7 +4,8 @@
 // The Gaussian-process surrogate implements it; tests implement it with known
 // analytic functions. All quantities are dimensionless (DESIGN.md section 2).
 
-#include <optional>
+#include <string>
+#include <vector>
 
 namespace rbcal::surrogate {
 
@@ -24,11 +25,15 @@ struct ParameterRange {
   double lambda_min = 0.0, lambda_max = 0.0;
 };
 
-// The immersed boundary's offset c (lattice spacings): how much thicker the membranes act
-// than they are, which sets the volume fraction a finite-resolution run stands for
-// (docs/library.md, "The effective volume fraction"). A model built from such runs at several
-// c has it as a nuisance parameter: its prior is normal(mean, sd) truncated to [min, max].
-struct OffsetPrior {
+// A parameter of the model that is not known exactly and that the calibration therefore
+// carries as a nuisance parameter with this prior: normal(mean, sd) truncated to [min, max].
+// Two exist (surrogate/offset_family.hpp): the immersed boundary's offset c, in lattice
+// spacings, which sets the volume fraction a finite-resolution run stands for (docs/library.md,
+// "The effective volume fraction"), and the box correction beta, ln eta_bulk = (1 + beta) ln
+// eta_re, which carries the library's 8a gap to a bulk suspension.
+struct ModelNuisance {
+  std::string name;  // parameter name in reports: "offset_c", "box_beta"
+  std::string what;  // one line for the report
   double mean = 0.0, sd = 0.0;
   double min = 0.0, max = 0.0;
 };
@@ -37,14 +42,15 @@ class ViscosityModel {
  public:
   virtual ~ViscosityModel() = default;
   // phi: volume fraction, capillary_number: Ca = eta0 gamma_dot a / G_s, viscosity_ratio: lambda = eta1 / eta0.
-  // A model with an offset predicts at its prior mean here.
+  // A model with nuisance parameters predicts at their prior means here.
   virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
   virtual ParameterRange range() const = 0;
 
-  // Models without an offset: none, and predict_at_offset ignores the offset.
-  virtual std::optional<OffsetPrior> offset_prior() const { return std::nullopt; }
-  virtual ViscosityPrediction predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
-                                                double /*offset*/) const {
+  // The model's nuisance parameters (none for a plain surrogate), and its prediction at given
+  // values of them (one per nuisances(), in that order; predict() uses their means).
+  virtual std::vector<ModelNuisance> nuisances() const { return {}; }
+  virtual ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
+                                           const std::vector<double>& /*nuisance_values*/) const {
     return predict(phi, capillary_number, viscosity_ratio);
   }
 };

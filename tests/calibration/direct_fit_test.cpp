@@ -326,11 +326,11 @@ TEST(DirectFit, OffsetIsANuisanceParameterThatWidensTheInterval) {
   for (double sd : {0.03, 0.1, 0.3}) {
     const auto family = test_models::analytic_offset_family(1.0, 0.75, sd);
     const DirectFitResult fit = fit_direct(sample, family);
-    ASSERT_TRUE(fit.offset_fitted);
+    ASSERT_EQ(fit.nuisances.size(), 1u);
     ASSERT_TRUE(fit.covariance_ok) << "prior sd " << sd;
     EXPECT_EQ(fit.parameter_names.back(), "offset_c");
-    EXPECT_GE(fit.offset, 0.45);
-    EXPECT_LE(fit.offset, 1.05);
+    EXPECT_GE(fit.nuisances[0].value, 0.45);
+    EXPECT_LE(fit.nuisances[0].value, 1.05);
     const double width = std::log(fit.shear_modulus_interval.upper / fit.shear_modulus_interval.lower);
     EXPECT_GT(width, 1.1 * last_width) << "prior sd " << sd;
     EXPECT_LT(fit.shear_modulus_interval.lower, design.shear_modulus) << "prior sd " << sd;
@@ -338,9 +338,28 @@ TEST(DirectFit, OffsetIsANuisanceParameterThatWidensTheInterval) {
     last_width = width;
   }
   DirectFitOptions fixed;
-  fixed.offset_as_parameter = false;
+  fixed.model_nuisances_as_parameters = false;
   const DirectFitResult at_mean = fit_direct(sample, test_models::analytic_offset_family(1.0), fixed);
-  EXPECT_FALSE(at_mean.offset_fitted);
-  EXPECT_TRUE(std::isnan(at_mean.offset));
+  EXPECT_TRUE(at_mean.nuisances.empty());
   EXPECT_EQ(at_mean.index_of("offset_c"), -1);
+}
+
+// The box correction beta (ln eta_bulk = (1 + beta) ln eta_re) is a second nuisance: data drawn
+// from the family with beta 0.1 are fitted without bias in G_s when the prior is centred there,
+// and are pulled when it is centred at 0 with a narrow sd (the correction then matters).
+TEST(DirectFit, BoxCorrectionIsASecondNuisanceThatMovesTheModel) {
+  const auto truth = test_models::analytic_offset_family(1.0, 0.75, 0.15, rbcal::surrogate::BoxCorrectionPrior{0.1, 0.02});
+  test_models::SyntheticDesign design;
+  design.add_model_noise = false;
+  design.relative_measurement_sd = 0.005;
+  std::mt19937_64 rng(29);
+  const SampleData sample = test_models::synthetic_sample(truth, design, rng);  // at c 0.75, beta 0.1
+  const DirectFitResult centred = fit_direct(sample, truth);
+  ASSERT_EQ(centred.nuisances.size(), 2u);
+  EXPECT_EQ(centred.nuisances[1].prior.name, "box_beta");
+  EXPECT_NEAR(centred.nuisances[1].value, 0.1, 0.02);
+  EXPECT_NEAR(std::log(centred.shear_modulus / design.shear_modulus), 0.0, 2.0 * centred.ln_shear_modulus_sd);
+  const auto wrong = test_models::analytic_offset_family(1.0, 0.75, 0.01, rbcal::surrogate::BoxCorrectionPrior{0.0, 0.005});
+  const DirectFitResult pulled = fit_direct(sample, wrong);
+  EXPECT_GT(std::abs(std::log(pulled.shear_modulus / design.shear_modulus)), 3.0 * pulled.ln_shear_modulus_sd);
 }

@@ -117,7 +117,7 @@ TEST(Posterior, OffsetOfAFamilyHasATruncatedNormalPrior) {
   const auto data = point(0.3, 20.0, 2.4, 0.05);
   const LogPosterior posterior(family, eta0, {data});
   ASSERT_EQ(posterior.dimension(), 2);
-  EXPECT_EQ(posterior.offset_index(), 1);
+  EXPECT_EQ(posterior.nuisance_index(), 1);
   EXPECT_EQ(posterior.parameter_names()[1], "offset_c");
   Eigen::Vector2d theta(std::log(g_s), 0.3);
   EXPECT_EQ(posterior.log_prior(theta), -std::numeric_limits<double>::infinity());  // below the first member
@@ -140,6 +140,6 @@ TEST(Posterior, OffsetOfAFamilyHasATruncatedNormalPrior) {
   EXPECT_NEAR(posterior.log_likelihood(theta),
               -0.5 * (std::pow(2.4 - p.eta_re, 2) / v + std::log(2.0 * std::numbers::pi * v)), 1e-12);
   PosteriorOptions at_mean;
-  at_mean.offset_as_parameter = false;
+  at_mean.model_nuisances_as_parameters = false;
   EXPECT_EQ(LogPosterior(family, eta0, {data}, at_mean).dimension(), 1);
 }

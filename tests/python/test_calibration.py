@@ -81,5 +81,6 @@ def test_a_surrogate_family_makes_the_offset_a_parameter(exe, data, surrogate, s
     name = result.samples[0]["name"]
     assert result.parameter_names(name)[-1] == "offset_c"
     mcmc = result.samples[0]["methods"]["mcmc"]
-    assert 0.6 <= mcmc["offset_c_interval"]["lower"] <= mcmc["offset_c"] <= mcmc["offset_c_interval"]["upper"] <= 0.9
-    assert result.samples[0]["methods"]["direct"]["offset_fitted"]
+    c = mcmc["model_nuisances"]["offset_c"]
+    assert 0.6 <= c["interval"]["lower"] <= c["value"] <= c["interval"]["upper"] <= 0.9
+    assert "offset_c" in result.samples[0]["methods"]["direct"]["model_nuisances"]

@@ -61,10 +61,13 @@ TEST(OffsetFamily, ReproducesEveryMemberAtItsOffset) {
   }
   // Without an offset it predicts at the prior mean (a member here).
   EXPECT_NEAR(f.predict(0.3, 0.5, 5.0).eta_re, f.members()[2].model->predict(0.3, 0.5, 5.0).eta_re, 1e-13);
-  const std::optional<OffsetPrior> prior = f.offset_prior();
-  ASSERT_TRUE(prior.has_value());
-  EXPECT_DOUBLE_EQ(prior->min, 0.45);
-  EXPECT_DOUBLE_EQ(prior->max, 1.05);
+  const std::vector<ModelNuisance> nuisances = f.nuisances();
+  ASSERT_EQ(nuisances.size(), 1u);  // no box correction given
+  EXPECT_EQ(nuisances[0].name, "offset_c");
+  EXPECT_DOUBLE_EQ(nuisances[0].min, 0.45);
+  EXPECT_DOUBLE_EQ(nuisances[0].max, 1.05);
+  EXPECT_EQ(f.predict_with(0.3, 0.5, 5.0, {0.9}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.9).eta_re);
+  EXPECT_THROW(f.predict_with(0.3, 0.5, 5.0, {0.9, 0.1}), std::invalid_argument);
 }
 
 TEST(OffsetFamily, IsExactForPredictionsLinearInTheOffset) {
@@ -145,9 +148,21 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
               members[k].surrogate.predict(0.25, 0.2, 5.0).eta_re);  // bit-identical, as a single surrogate
   }
   const auto any_family = load_viscosity_model(dir / "family.json");
-  ASSERT_TRUE(any_family->offset_prior().has_value());
-  EXPECT_DOUBLE_EQ(any_family->offset_prior()->sd, 0.15);
-  EXPECT_FALSE(load_viscosity_model(dir / "single.json")->offset_prior().has_value());
+  ASSERT_EQ(any_family->nuisances().size(), 1u);
+  EXPECT_DOUBLE_EQ(any_family->nuisances()[0].sd, 0.15);
+  EXPECT_TRUE(load_viscosity_model(dir / "single.json")->nuisances().empty());
+
+  // With a box correction: a second nuisance, kept with its source.
+  save_surrogate_family(members, 0.75, 0.15, dir / "boxed.json", BoxCorrectionRecord{{0.05, 0.04}, "twin runs"});
+  const OffsetFamilyModel boxed = load_surrogate_family(dir / "boxed.json");
+  ASSERT_EQ(boxed.nuisances().size(), 2u);
+  EXPECT_EQ(boxed.nuisances()[1].name, "box_beta");
+  EXPECT_DOUBLE_EQ(boxed.nuisances()[1].mean, 0.05);
+  EXPECT_DOUBLE_EQ(boxed.nuisances()[1].sd, 0.04);
+  EXPECT_EQ(rbcal::formats::read_json_file(dir / "boxed.json")["box_correction"]["source"], "twin runs");
+  const double plain = loaded.predict_at_offset(0.25, 0.2, 5.0, 0.75).eta_re;
+  EXPECT_NEAR(boxed.predict_with(0.25, 0.2, 5.0, {0.75, 0.2}).eta_re, std::pow(plain, 1.2), 1e-12);
+  EXPECT_NEAR(boxed.predict(0.25, 0.2, 5.0).eta_re, std::pow(plain, 1.05), 1e-12);  // at the means
 
   // A bad field inside a member is named with the member's path.
   nlohmann::json j = rbcal::formats::read_json_file(dir / "family.json");

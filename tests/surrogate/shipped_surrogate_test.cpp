@@ -80,15 +80,14 @@ TEST(ShippedSurrogate, ShowsThePhysicalTrends) {
 TEST(ShippedSurrogateFamily, HoldsTheShippedSurrogateAndFallsWithTheOffset) {
   const OffsetFamilyModel family = load_surrogate_family(kLibrary / "surrogate_family.json");
   const ViscositySurrogate shipped = load_surrogate(kLibrary / "surrogate.json");
-  const std::optional<OffsetPrior> prior = family.offset_prior();
-  ASSERT_TRUE(prior.has_value());
-  EXPECT_DOUBLE_EQ(prior->mean, 0.75);
-  EXPECT_DOUBLE_EQ(prior->sd, 0.15);
-  EXPECT_LE(prior->min, prior->mean - 2.0 * prior->sd + 1e-12);
-  EXPECT_GE(prior->max, prior->mean + 2.0 * prior->sd - 1e-12);
+  const ModelNuisance& prior = family.offset_prior();
+  EXPECT_DOUBLE_EQ(prior.mean, 0.75);
+  EXPECT_DOUBLE_EQ(prior.sd, 0.15);
+  EXPECT_LE(prior.min, prior.mean - 2.0 * prior.sd + 1e-12);
+  EXPECT_GE(prior.max, prior.mean + 2.0 * prior.sd - 1e-12);
   for (double phi : {0.1, 0.3, 0.5})
     for (double ca : {0.01, 0.8, 3.2}) {
-      EXPECT_NEAR(family.predict(phi, ca, 5.0).eta_re / shipped.predict(phi, ca, 5.0).eta_re, 1.0, 1e-12)
+      EXPECT_NEAR(family.predict_at_offset(phi, ca, 5.0, 0.75).eta_re / shipped.predict(phi, ca, 5.0).eta_re, 1.0, 1e-12)
           << phi << " " << ca;  // the interpolation's weights at a member are exact to rounding
       double previous = 1e300;
       for (const auto& m : family.members()) {
