@@ -1,7 +1,10 @@
 #include "calibration/alpha_method.hpp"
 
+#include "calibration/curve_interpolation.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace rbcal::calibration {
@@ -68,6 +71,7 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
     if (p.phi >= options.phi_min && p.phi <= options.phi_max) points.push_back(p);
   std::sort(points.begin(), points.end(),
             [](const auto& a, const auto& b) { return a.shear_rate < b.shear_rate; });
+  std::vector<std::pair<double, std::pair<std::vector<double>, std::vector<double>>>> groups;  // rate, (phi, eta_re)
   for (std::size_t begin = 0; begin < points.size();) {
     std::size_t end = begin;
     std::vector<double> phi, eta_re;
@@ -76,24 +80,67 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
       eta_re.push_back(points[end].eta_re);
       ++end;
     }
+    groups.push_back({points[begin].shear_rate, {phi, eta_re}});
+    begin = end;
+  }
+  // Curves measured at their own shear rates (digitised figures) share none: then every curve is
+  // read at the shear rates of the hematocrit with the most points (log-log, inside each curve's
+  // measured range, curve_interpolation.hpp), and the alphas are fitted there.
+  const bool shared = std::any_of(groups.begin(), groups.end(), [&](const auto& g) {
+    return static_cast<int>(g.second.first.size()) >= options.min_points_per_shear_rate;
+  });
+  if (!shared && !points.empty()) {
+    std::map<double, std::vector<RelativeViscosityPoint>> curves;
+    for (const auto& p : points) curves[p.phi].push_back(p);
+    const auto reference = std::max_element(curves.begin(), curves.end(), [](const auto& a, const auto& b) {
+      return a.second.size() < b.second.size();
+    });
+    groups.clear();
+    for (const auto& r : reference->second) {
+      std::vector<double> phi, eta_re;
+      for (const auto& [curve_phi, curve] : curves)
+        if (const auto v = curve_at(curve, r.shear_rate)) {
+          phi.push_back(curve_phi);
+          eta_re.push_back(*v);
+        }
+      groups.push_back({r.shear_rate, {phi, eta_re}});
+    }
+    std::ostringstream m;
+    m << "no shear rate is shared by " << options.min_points_per_shear_rate
+      << " hematocrits: every curve read at the shear rates of phi " << reference->first
+      << " (log-log interpolation, no extrapolation)";
+    result.messages.push_back(m.str());
+    result.curves_interpolated = true;
+  }
+  for (const auto& [rate, data] : groups) {
+    const auto& [phi, eta_re] = data;
     if (static_cast<int>(phi.size()) >= options.min_points_per_shear_rate) {
-      result.measured.push_back({points[begin].shear_rate, fit_exponential_alpha(phi, eta_re, options.fit_space)});
+      result.measured.push_back({rate, fit_exponential_alpha(phi, eta_re, options.fit_space)});
     } else {
       std::ostringstream m;
-      m << "shear rate " << points[begin].shear_rate << " 1/s skipped: " << phi.size()
+      m << "shear rate " << rate << " 1/s skipped: " << phi.size()
         << " volume fraction(s) within the cut-offs, need " << options.min_points_per_shear_rate;
       result.messages.push_back(m.str());
     }
-    begin = end;
   }
 
   // Model alpha per Ca on a ln-uniform grid, fitted to the model at a phi grid.
   const surrogate::ParameterRange range = model.range();
   const double phi_lo = std::max(range.phi_min, options.phi_min);
   const double phi_hi = std::min(range.phi_max, options.phi_max);
+  // The model's alpha is fitted where the sample's is: at its hematocrits (those inside the
+  // model's range). ln eta_re is not exactly linear in phi, so an alpha over another phi window
+  // would not be comparable. A sample with fewer than two such hematocrits uses a uniform grid.
   std::vector<double> model_phi;
-  for (int i = 0; i < options.model_phi_points; ++i)
-    model_phi.push_back(phi_lo + (phi_hi - phi_lo) * i / std::max(1, options.model_phi_points - 1));
+  for (const auto& p : points)
+    if (p.phi >= phi_lo && p.phi <= phi_hi && std::find(model_phi.begin(), model_phi.end(), p.phi) == model_phi.end())
+      model_phi.push_back(p.phi);
+  std::sort(model_phi.begin(), model_phi.end());
+  if (model_phi.size() < 2 || !options.model_at_sample_hematocrits) {
+    model_phi.clear();
+    for (int i = 0; i < options.model_phi_points; ++i)
+      model_phi.push_back(phi_lo + (phi_hi - phi_lo) * i / std::max(1, options.model_phi_points - 1));
+  }
   auto model_alpha = [&](double ca) {
     std::vector<double> eta_re;
     for (double phi : model_phi) eta_re.push_back(model.predict(phi, ca, options.setup.lambda).eta_re);

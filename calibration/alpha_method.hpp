@@ -18,7 +18,10 @@ struct AlphaMethodOptions {
   double phi_max = 1.0;                     // the seed study used phi <= 0.4 for hardened cells
   AlphaFitSpace fit_space = AlphaFitSpace::linear;
   int min_points_per_shear_rate = 2;  // shear rates with fewer phi values are skipped
-  int model_phi_points = 9;           // phi grid (uniform over the model's phi range within the cut-offs)
+  // The model's alpha at the sample's hematocrits (true), or on a uniform grid of
+  // model_phi_points over the model's phi range within the cut-offs (false, or fewer than two).
+  bool model_at_sample_hematocrits = true;
+  int model_phi_points = 9;
   int model_ca_points = 41;           // ln-uniform Ca grid over the model's Ca range
   // The seed study's direction: each of these Ca is mapped to a shear rate (seven values in
   // 0.01 - 0.8 as in the study, whose exact values are not stated). Values outside the model's
@@ -61,6 +64,7 @@ struct AlphaMethodResult {
   std::vector<AlphaMatch> per_capillary_number;  // each options.capillary_numbers -> shear rate -> G_s
   ShearModulusSummary shear_modulus;              // over per_shear_rate (the headline value)
   ShearModulusSummary shear_modulus_per_ca;       // over per_capillary_number (the study's average)
+  bool curves_interpolated = false;  // no shared shear rates: curves read at one curve's rates
   std::vector<std::string> messages;
 };
 

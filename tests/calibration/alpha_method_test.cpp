@@ -107,3 +107,40 @@ TEST(AlphaMethod, ShearRatesBeyondTheModelAreSkippedWithAMessage) {
     }
   EXPECT_GT(unmatched, 0);
 }
+
+// Curves measured at their own shear rates (a digitised figure: no rate shared by two
+// hematocrits) are read at the rates of one curve by log-log interpolation inside each curve's
+// range; the known G_s comes back as from shared rates. The analytic model is exactly linear in
+// ln Ca (so in ln shear rate), where the interpolation is exact.
+TEST(AlphaMethod, CurvesAtTheirOwnShearRatesAreInterpolated) {
+  AnalyticViscosityModel model;
+  model.c3 = 0.0;
+  test_models::SyntheticDesign design;
+  design.shear_modulus = 0.55e-6;
+  design.relative_measurement_sd = 0.0;
+  design.add_model_noise = false;
+  design.phis = {0.2, 0.3, 0.4};
+  SampleData sample;
+  std::mt19937_64 rng(5);
+  for (std::size_t k = 0; k < design.phis.size(); ++k) {
+    test_models::SyntheticDesign one = design;
+    one.phis = {design.phis[k]};
+    for (double& rate : one.shear_rates) rate *= std::pow(1.07, static_cast<double>(k));  // own rates per curve
+    const SampleData part = test_models::synthetic_sample(model, one, rng);
+    sample.plasma = part.plasma;
+    sample.points.insert(sample.points.end(), part.points.begin(), part.points.end());
+  }
+  const AlphaMethodResult result = estimate_by_alpha_matching(sample, model);
+  EXPECT_TRUE(result.curves_interpolated);
+  ASSERT_GE(result.shear_modulus.count, 5);
+  EXPECT_NEAR(result.shear_modulus.mean / design.shear_modulus, 1.0, 1e-6);
+  // The reference curve's lowest rate (1 1/s) lies below the other curves' ranges: it has one
+  // hematocrit, is not extrapolated, and is skipped; the other seven have all three.
+  ASSERT_EQ(result.measured.size(), design.shear_rates.size() - 1);
+  for (const auto& m : result.measured) EXPECT_EQ(m.fit.points, 3) << m.shear_rate;
+  EXPECT_GT(result.measured.front().shear_rate, 1.5);
+
+  AlphaMethodOptions grid;
+  grid.model_at_sample_hematocrits = false;  // the same here: the model is exactly exp(alpha phi)
+  EXPECT_NEAR(estimate_by_alpha_matching(sample, model, grid).shear_modulus.mean / design.shear_modulus, 1.0, 1e-6);
+}
