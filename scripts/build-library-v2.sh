@@ -13,7 +13,11 @@
 #      0.45 0.6 0.75 0.9 1.05, equally spaced, OFFSET among them) joined into
 #      data/library/default/surrogate_family.json with the prior OFFSET +- OFFSET_SD
 #      (rbcal surrogate family), the model the calibration uses by default: the offset is
-#      then a nuisance parameter of every fit (docs/calibration.md).
+#      then a nuisance parameter of every fit (docs/calibration.md). With BOX=auto the family
+#      also carries the box correction beta, its prior from the 8a/16a twin runs committed
+#      in data/cases/library_v2/results (scripts/box_twins.py); the default, BOX=none, leaves
+#      it out until enough twins are in and the MCMC mixes with it (docs/library.md, "The box
+#      twins").
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 # Under either method:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
@@ -79,7 +83,8 @@ fi
 "$rbcal" surrogate check "$out/surrogate.json" || echo "trend check FAILED (see above)"
 if [ "${METHOD:-effective-phi}" != richardson ]; then
   members=()
-  work="$(mktemp -d)"
+  work="$out/family_members"  # a fixed path, so the members' source_library is reproducible; removed below
+  rm -rf "$work"
   for c in ${FAMILY_OFFSETS:-0.45 0.6 0.75 0.9 1.05}; do
     if [ "$c" = "${OFFSET:-0.75}" ]; then
       members+=(--member "$c=$out/surrogate.json")
@@ -91,7 +96,17 @@ if [ "${METHOD:-effective-phi}" != richardson ]; then
     "$rbcal" surrogate build "$work/c$c" | grep -E "training cases|RMS relative error"
     members+=(--member "$c=$work/c$c/surrogate.json")
   done
+  box=()
+  if [ "${BOX:-none}" = auto ]; then
+    twins="$(python3 scripts/box_twins.py)"
+    echo "$twins"
+    prior="$(echo "$twins" | sed -n 's/^prior for the bulk: mean \([-0-9.]*\), sd \([0-9.]*\)$/\1 \2/p')"
+    count="$(echo "$twins" | sed -n 's/^\([0-9]*\) twins:.*/\1/p')"
+    read -r box_mean box_sd <<< "$prior"
+    box=(--box-mean "$box_mean" --box-sd "$box_sd"
+         --box-source "$count 8a/16a twin runs at phi_eff 0.41-0.55 (scripts/box_twins.py; docs/library.md, The box twins)")
+  fi
   "$rbcal" surrogate family "${members[@]}" --prior-mean "${OFFSET:-0.75}" --prior-sd "${OFFSET_SD:-0.15}" \
-    -o "$out/surrogate_family.json"
+    "${box[@]}" -o "$out/surrogate_family.json"
   rm -rf "$work"
 fi
