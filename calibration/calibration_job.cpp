@@ -246,8 +246,8 @@ std::string CalibrationJobOptions::invalid_reason() const {
   if (!(phi_max > 0.0 && phi_max <= 1.0)) return "--phi-max must lie in (0, 1]";
   if (!(min_shear_rate >= 0.0)) return "--min-shear-rate must be >= 0";
   if (!(plasma.plateau_min_shear_rate >= 0.0)) return "--plateau-min-shear-rate must be >= 0";
-  if (sampler.chains < 1 || sampler.walkers < 2 || sampler.max_steps < 1)
-    return "MCMC needs at least one chain, two walkers and one step";
+  if (sampler.chains < 1 || (sampler.walkers != 0 && sampler.walkers < 2) || sampler.max_steps < 1)
+    return "MCMC needs at least one chain, two walkers (or 0: automatic) and one step";
   if (!compare.empty()) {
     if (!compared_samples(compare)) return "--compare " + compare + ": expected NUMERATOR/DENOMINATOR sample names";
     if (!runs("mcmc")) return "--compare needs the mcmc method (--method mcmc or all)";

@@ -38,7 +38,12 @@ struct CalibrationJobOptions {
   // Points whose eta_re is not above the next lower hematocrit's curve are left out and
   // named (calibration/hematocrit_order.hpp) unless this is set.
   bool keep_out_of_hematocrit_order = false;
-  McmcOptions sampler;                   // seed, threads, steps, chains, walkers
+  // seed, threads, steps, chains, walkers (0: automatic_walkers, 8 per parameter, at least 16)
+  McmcOptions sampler = [] {
+    McmcOptions o;
+    o.walkers = 0;
+    return o;
+  }();
   std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
   ReportOptions report;
   std::string command_line;              // the equivalent command, for the provenance

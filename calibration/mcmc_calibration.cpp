@@ -1,5 +1,6 @@
 #include "calibration/mcmc_calibration.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rbcal::calibration {
@@ -15,6 +16,8 @@ std::vector<double> McmcCalibration::shear_modulus_draws() const {
   for (double& x : draws) x = std::exp(x);
   return draws;
 }
+
+int automatic_walkers(int parameters) { return std::max(16, 8 * parameters); }
 
 McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::ViscosityModel& model,
                                const McmcCalibrationOptions& options) {
@@ -68,8 +71,10 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   }
   for (int p = 0; p < d; ++p)
     if (!(start.scale(p) > 0.0) || !std::isfinite(start.scale(p))) start.scale(p) = 0.1;
+  McmcOptions sampler = options.sampler;
+  if (sampler.walkers == 0) sampler.walkers = automatic_walkers(d);
   out.mcmc = sample_posterior([&posterior](const Eigen::VectorXd& theta) { return posterior(theta); },
-                              posterior.parameter_names(), start, options.sampler);
+                              posterior.parameter_names(), start, sampler);
 
   const auto& summaries = out.mcmc.parameters;
   out.shear_modulus_median = std::exp(summaries[0].median);

@@ -12,9 +12,15 @@
 
 namespace rbcal::calibration {
 
+// Walkers per ensemble when McmcOptions::walkers is 0: 8 per parameter, at least 16. Fewer
+// left the pilot of a four-parameter posterior (G_s, eta0, the offset and the box correction)
+// with walkers stranded in a tail, and the independence proposal fitted to it failed
+// (docs/library.md, "The box twins").
+int automatic_walkers(int parameters);
+
 struct McmcCalibrationOptions {
   PosteriorOptions posterior;  // parameters, priors, a, lambda
-  McmcOptions sampler;
+  McmcOptions sampler;         // walkers 0: automatic_walkers(dimension)
   // Start fit; its cell radius, lambda and bounds are taken from `posterior`.
   DirectFitOptions start_fit;
 };

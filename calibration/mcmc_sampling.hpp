@@ -28,7 +28,7 @@ SamplerKind sampler_from_string(const std::string& name);  // "ensemble" or "ind
 struct McmcOptions {
   SamplerKind sampler = SamplerKind::Independence;
   int chains = 4;              // independent groups of walkers
-  int walkers = 16;            // per group (at least 2 x dimension recommended)
+  int walkers = 16;            // per group (at least 2 x dimension recommended; calibrate_mcmc: 0 = auto)
   double stretch_scale = 2.0;  // a of the stretch move (Goodman & Weare 2010)
   std::uint64_t seed = 20240601;
   // First check after this many steps per walker, later checks every check_interval steps

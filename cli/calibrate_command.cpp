@@ -106,8 +106,9 @@ void add_calibrate_command(CLI::App& app) {
   c->add_option("--chains", j.sampler.chains, "Independent MCMC ensembles (R-hat compares them)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  c->add_option("--walkers", j.sampler.walkers, "Walkers per ensemble (at least twice the number of parameters)")
-      ->check(CLI::Range(2, 100000))
+  c->add_option("--walkers", j.sampler.walkers,
+                "Walkers per ensemble (at least twice the number of parameters; 0: 8 per parameter, at least 16)")
+      ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   c->callback([o] {
     cal::CalibrationJobOptions& job = o->job;

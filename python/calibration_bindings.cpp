@@ -163,7 +163,7 @@ void bind_calibration(py::module_& m) {
         py::arg("fit_lambda") = false, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
         py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
         py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
-        py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 16, py::arg("sampler") = "independence", py::arg("compare") = "",
+        py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 0, py::arg("sampler") = "independence", py::arg("compare") = "",
         py::arg("report") = "", py::arg("plots") = false,
         "G_s of each sample in a rheometer CSV against a surrogate or surrogate-family file, by the alpha method, the direct fit and MCMC "
         "(the options and defaults of `rbcal calibrate`); report: also write the report folder there");
