@@ -13,6 +13,10 @@ std::optional<double> curve_at(std::vector<RelativeViscosityPoint> curve, double
     const auto& a = curve[i];
     const auto& b = curve[i + 1];
     if (shear_rate > b.shear_rate) continue;
+    if (!(b.shear_rate > a.shear_rate)) {  // a repeated rate: no interval to interpolate in
+      if (shear_rate == a.shear_rate) return a.eta_re;
+      continue;
+    }
     const double t = std::log(shear_rate / a.shear_rate) / std::log(b.shear_rate / a.shear_rate);
     return std::exp((1.0 - t) * std::log(a.eta_re) + t * std::log(b.eta_re));
   }

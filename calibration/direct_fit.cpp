@@ -68,8 +68,9 @@ struct WeightedResidual {
 // constant. Without it a least-squares fit is drawn to where the model is least certain (a
 // large v_i shrinks every residual), while the posterior (posterior.hpp) keeps the term; with it
 // the fit is the posterior's mode, and the direct fit and the MCMC answer the same question.
-// v_ref is the measurement variance at the start; K = 10 keeps the root real unless eta0 moves
-// by a factor e^5.
+// v_ref is the combined variance at the start; K = 10 keeps the root real unless v_i falls by a
+// factor e^10 from there. Variances are floored at 1e-300 (a point with zero stated sd and a
+// model without sd). With a robust loss the term is left out: the fit is then no posterior mode.
 struct LogVarianceResidual {
   PointAtParameters at;
   double ln_reference_variance = 0.0;
@@ -77,7 +78,8 @@ struct LogVarianceResidual {
   bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
                   const double* nuisance0, const double* nuisance1, double* residual) const {
     const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, nuisance0, nuisance1);
-    const double argument = std::log(measured.sd * measured.sd + p.sd * p.sd) - ln_reference_variance + kShift;
+    const double argument =
+        std::log(std::max(measured.sd * measured.sd + p.sd * p.sd, 1e-300)) - ln_reference_variance + kShift;
     if (!(argument > 0.0)) return false;
     residual[0] = std::sqrt(argument);
     return std::isfinite(residual[0]);
@@ -263,9 +265,12 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
           new WeightedResidual(residuals[i]));
       problem.AddResidualBlock(cost, make_loss(options), &x.ln_shear_modulus, &x.ln_lambda,
                                &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]);
-      const auto measured = observed_relative_viscosity(sample.points[i], fit_eta0, sample.plasma.eta0);
+      if (options.loss != RobustLoss::none) continue;
+      const auto [measured, p] = residuals[i].at(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity,
+                                                 &x.nuisance[0], &x.nuisance[1]);
       auto* normalisation = new ceres::NumericDiffCostFunction<LogVarianceResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
-          new LogVarianceResidual{residuals[i].at, std::log(measured.sd * measured.sd)});
+          new LogVarianceResidual{residuals[i].at,
+                                  std::log(std::max(measured.sd * measured.sd + p.sd * p.sd, 1e-300))});
       normalisation_blocks.push_back(problem.AddResidualBlock(normalisation, nullptr, &x.ln_shear_modulus, &x.ln_lambda,
                                                               &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]));
     }

@@ -31,14 +31,29 @@ Extremes model_extremes(double phi, const surrogate::ViscosityModel& model, cons
   } else {
     lambdas.push_back(setup.lambda);
   }
+  // A model's nuisance parameters (the offset, the box correction) move it too: every
+  // combination of their prior's min, mean and max is tried, so that no point is dropped that
+  // another value of them could reach.
+  std::vector<std::vector<double>> settings{{}};
+  for (const surrogate::ModelNuisance& n : model.nuisances()) {
+    std::vector<std::vector<double>> next;
+    for (const auto& s : settings)
+      for (double v : {n.min, n.mean, n.max}) {
+        next.push_back(s);
+        next.back().push_back(v);
+      }
+    settings = std::move(next);
+  }
   Extremes e{1e300, 0.0, -1e300, 0.0};
-  for (double lambda : lambdas)
-    for (int k = 0; k < kCaSamples; ++k) {
-      const double ca = r.ca_min * std::pow(r.ca_max / r.ca_min, k / (kCaSamples - 1.0));
-      const surrogate::ViscosityPrediction p = model.predict(phi, ca, lambda);
-      if (p.eta_re < e.min) e = {p.eta_re, p.sd, e.max, e.max_sd};
-      if (p.eta_re > e.max) e = {e.min, e.min_sd, p.eta_re, p.sd};
-    }
+  for (const auto& values : settings)
+    for (double lambda : lambdas)
+      for (int k = 0; k < kCaSamples; ++k) {
+        const double ca = r.ca_min * std::pow(r.ca_max / r.ca_min, k / (kCaSamples - 1.0));
+        const surrogate::ViscosityPrediction p =
+            values.empty() ? model.predict(phi, ca, lambda) : model.predict_with(phi, ca, lambda, values);
+        if (p.eta_re < e.min) e = {p.eta_re, p.sd, e.max, e.max_sd};
+        if (p.eta_re > e.max) e = {e.min, e.min_sd, p.eta_re, p.sd};
+      }
   return e;
 }
 

@@ -31,7 +31,7 @@ void FieldReader::only_known_keys(const std::string& path, const std::vector<std
     if (ok) continue;
     std::string list;
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    fail(path + "." + key, "unknown field (known here: " + list + ")");
+    fail(path.empty() ? key : path + "." + key, "unknown field (known here: " + list + ")");
   }
 }
 

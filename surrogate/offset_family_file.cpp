@@ -37,6 +37,8 @@ OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std:
   const std::string schema = r.text("schema");
   if (schema != formats::kSurrogateFamilySchema)
     r.fail("schema", std::string("must be \"") + formats::kSurrogateFamilySchema + "\", got \"" + schema + "\"");
+  r.only_known_keys("", {"schema", "parameter", "prior", "box_correction", "members", "provenance"});
+  r.only_known_keys("box_correction", {"mean", "sd", "source"});
   const double mean = r.number("prior.mean");
   const double sd = r.positive("prior.sd");
   std::optional<BoxCorrectionPrior> box;

@@ -363,3 +363,19 @@ TEST(DirectFit, BoxCorrectionIsASecondNuisanceThatMovesTheModel) {
   const DirectFitResult pulled = fit_direct(sample, wrong);
   EXPECT_GT(std::abs(std::log(pulled.shear_modulus / design.shear_modulus)), 3.0 * pulled.ln_shear_modulus_sd);
 }
+
+// Digitised data often state no error: points with sd 0 (and a model without sd) must still be
+// fitted; the likelihood's normalisation is floored, not -inf (a review found the fit failing).
+TEST(DirectFit, PointsWithZeroStatedErrorAreFitted) {
+  AnalyticViscosityModel model;
+  model.relative_sd = 0.01;
+  test_models::SyntheticDesign design;
+  design.add_model_noise = false;
+  design.relative_measurement_sd = 0.0;
+  std::mt19937_64 rng(41);
+  SampleData sample = test_models::synthetic_sample(model, design, rng);
+  for (auto& p : sample.points) p.eta_re_sd = 0.0;
+  const DirectFitResult fit = fit_direct(sample, model);
+  EXPECT_TRUE(fit.converged) << fit.solver_report;
+  EXPECT_NEAR(fit.shear_modulus / design.shear_modulus, 1.0, 0.05);
+}

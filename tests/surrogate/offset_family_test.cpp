@@ -108,6 +108,26 @@ TEST(OffsetFamily, IsSmoothInTheOffsetAndConvergesToASmoothDependence) {
   EXPECT_LT(coarse, 2e-3);
 }
 
+// ln eta -> (1 + beta) ln eta: eta^(1 + beta), and sd and derivatives by the chain rule
+// (checked against a finite difference of the transform).
+TEST(OffsetFamily, BoxCorrectionCarriesSdAndDerivativesByTheChainRule) {
+  ViscosityPrediction p;
+  p.eta_re = 3.0;
+  p.sd = 0.1;
+  p.d_phi = 7.0;
+  p.d_ln_ca = -0.4;
+  p.d_ln_lambda = 0.2;
+  const double beta = 0.12, h = 1e-6;
+  const ViscosityPrediction q = with_box_correction(p, beta);
+  EXPECT_NEAR(q.eta_re, std::pow(3.0, 1.12), 1e-12);
+  const double slope = (std::pow(3.0 + h, 1.12) - std::pow(3.0 - h, 1.12)) / (2.0 * h);
+  EXPECT_NEAR(q.sd, slope * 0.1, 1e-8);
+  EXPECT_NEAR(q.d_phi, slope * 7.0, 1e-7);
+  EXPECT_NEAR(q.d_ln_ca, slope * -0.4, 1e-8);
+  EXPECT_NEAR(q.d_ln_lambda, slope * 0.2, 1e-8);
+  EXPECT_EQ(with_box_correction(p, 0.0).eta_re, 3.0);
+}
+
 TEST(OffsetFamily, RangeIsTheMembersCommonRange) {
   std::vector<OffsetFamilyMember> members;
   members.push_back({0.6, std::make_shared<KnownMember>(0.6, linear, ParameterRange{0.05, 0.62, 0.01, 3.2, 0.1, 10.0})});
@@ -175,6 +195,17 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
     const std::string what = e.what();
     EXPECT_NE(what.find("bad.json (members.1.surrogate)"), std::string::npos) << what;
     EXPECT_NE(what.find("training.2.noise_variance"), std::string::npos) << what;
+  }
+  // A misspelt key is refused, not read as a family without a box correction.
+  nlohmann::json misspelt = rbcal::formats::read_json_file(dir / "boxed.json");
+  misspelt["box_corection"] = misspelt["box_correction"];
+  misspelt.erase("box_correction");
+  std::ofstream(dir / "misspelt.json") << misspelt.dump();
+  try {
+    load_viscosity_model(dir / "misspelt.json");
+    FAIL() << "a misspelt box_correction was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("box_corection: unknown field"), std::string::npos) << e.what();
   }
   // Unequal spacing is refused before anything is written.
   members[2].offset = 1.2;
