@@ -134,13 +134,11 @@ class SampleCalibration {
       if (!r.direct->covariance_ok) r.warnings.push_back("direct fit: covariance rank deficient, no interval");
       if (r.direct->at_bound) r.warnings.push_back("direct fit: an estimate sits on a bound, interval unreliable");
       if (r.direct->model_edge != ModelEdge::none) r.warnings.push_back("direct fit: " + r.direct->model_edge_reason);
-      for (const std::string& m : r.direct->messages)
-        if (m.find("still changed") != std::string::npos) r.warnings.push_back("direct fit: " + m);
-      std::vector<RelativeViscosityPoint> used;
-      for (const auto& f : r.direct->points)
-        if (f.used) used.push_back(f.point);
+      if (!r.direct->point_set_settled)
+        r.warnings.push_back(std::string("direct fit: ") + kPointSetUnsettled);
       if (r.direct->covariance_ok && r.direct->model_edge == ModelEdge::none)
-        if (auto w = extrapolation_warning("direct fit", used, r.direct->plasma_viscosity, o_.setup.cell_radius,
+        if (auto w = extrapolation_warning("direct fit", r.direct->used_points(), r.direct->plasma_viscosity,
+                                           o_.setup.cell_radius,
                                            r.direct->shear_modulus_interval.lower, model_.range()))
           r.warnings.push_back(*w);
     } catch (const std::exception& e) {

@@ -319,8 +319,10 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     const std::vector<bool> now_inside = select_inside(obs, sample.points, x);
     const bool last_round = edge_fit || round + 1 == std::max(1, options.max_selection_rounds);
     if (now_inside == used || last_round) {
-      if (now_inside != used && !edge_fit)
-        result.messages.push_back("the set of points inside the model's range still changed after the last refit");
+      if (now_inside != used && !edge_fit) {
+        result.point_set_settled = false;
+        result.messages.push_back(kPointSetUnsettled);
+      }
       result.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
       result.solver_report = summary.BriefReport();
       // The covariance of the weighted residuals and priors (Gauss-Newton): the normalisation
@@ -366,10 +368,12 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       x.ln_shear_modulus - lo < bound_tolerance || hi - x.ln_shear_modulus < bound_tolerance ||
       (options.setup.fit_lambda &&
        (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance)) ||
-      std::any_of(nuisances.begin(), nuisances.end(), [&](const surrogate::ModelNuisance& n) {
-        const double v = x.nuisance[&n - nuisances.data()];
-        return v - n.min < bound_tolerance || n.max - v < bound_tolerance;
-      });
+      [&] {
+        for (int k = 0; k < n_nuisances; ++k)
+          if (x.nuisance[k] - nuisances[k].min < bound_tolerance || nuisances[k].max - x.nuisance[k] < bound_tolerance)
+            return true;
+        return false;
+      }();
   if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
   ViscosityObservation at_estimate = obs;

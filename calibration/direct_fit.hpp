@@ -23,6 +23,10 @@ enum class RobustLoss { none, huber, cauchy };
 // The most nuisance parameters a model may have (viscosity_model.hpp): the offset and the box.
 inline constexpr int kMaxModelNuisances = 2;
 
+// The message of a fit whose set of points inside the model's range did not settle.
+inline constexpr const char* kPointSetUnsettled =
+    "the set of points inside the model's range still changed after the last refit";
+
 // A model nuisance parameter's estimate with its interval (clipped to the prior's support).
 struct NuisanceEstimate {
   surrogate::ModelNuisance prior;
@@ -87,8 +91,17 @@ struct DirectFitResult {
   bool plasma_viscosity_fitted = false;
   std::vector<NuisanceEstimate> nuisances;  // the model's nuisance parameters, as fitted
   std::vector<FittedPoint> points;
+  bool point_set_settled = true;  // false: kPointSetUnsettled (also in messages)
   std::vector<std::string> messages;
   std::string solver_report;  // Ceres' brief report of the last solve
+
+  // The points the fit used (those inside the model's range at the estimate's last round).
+  std::vector<RelativeViscosityPoint> used_points() const {
+    std::vector<RelativeViscosityPoint> used;
+    for (const auto& f : points)
+      if (f.used) used.push_back(f.point);
+    return used;
+  }
 
   // Index of a parameter in estimate and covariance, -1 when not fitted.
   int index_of(const std::string& name) const {

@@ -31,8 +31,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
   out.start_fit = fit_direct(sample, model, fit_options);
-  for (const auto& f : out.start_fit.points)
-    if (f.used) out.points.push_back(f.point);
+  out.points = out.start_fit.used_points();
 
   // After an edge fit the likelihood's optimum lies outside the model's Ca range, where the
   // surrogate only extrapolates: the posterior is then truncated to the range, and its interval
