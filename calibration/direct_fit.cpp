@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "calibration/joint_likelihood.hpp"
 #include "calibration/viscosity_observation.hpp"
 
 namespace rbcal::calibration {
@@ -63,28 +64,54 @@ struct WeightedResidual {
   }
 };
 
-// The Gaussian likelihood's normalisation, 0.5 ln v_i per point (v_i = measurement var + model
-// var), written as a residual sqrt(ln(v_i / v_ref) + K) whose half square is that term up to a
-// constant. Without it a least-squares fit is drawn to where the model is least certain (a
-// large v_i shrinks every residual), while the posterior (posterior.hpp) keeps the term; with it
-// the fit is the posterior's mode, and the direct fit and the MCMC answer the same question.
-// v_ref is the combined variance at the start; K = 10 keeps the root real unless v_i falls by a
-// factor e^10 from there. Variances are floored at 1e-300 (a point with zero stated sd and a
-// model without sd). With a robust loss the term is left out: the fit is then no posterior mode.
-struct LogVarianceResidual {
-  PointAtParameters at;
-  double ln_reference_variance = 0.0;
-  static constexpr double kShift = 10.0;
-  bool operator()(const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
-                  const double* nuisance0, const double* nuisance1, double* residual) const {
-    const auto [measured, p] = at(ln_shear_modulus, ln_lambda, ln_plasma_viscosity, nuisance0, nuisance1);
+// Every used point at once with the model's errors correlated between them (joint_likelihood.hpp):
+// the whitened residuals L^-1 r (Sigma = L L^T), or, as a separate block, the likelihood's
+// normalisation 1/2 ln det Sigma, written as the residual sqrt(ln det Sigma - ln det Sigma_ref + K n)
+// whose half square is that term up to a constant. Without it a least-squares fit is drawn to where
+// the model is least certain (a large Sigma shrinks every residual), while the posterior
+// (posterior.hpp) keeps the term; with it the fit is the posterior's mode, and the direct fit and
+// the MCMC answer the same question. Sigma_ref is Sigma at the start; K = 10 per point keeps the
+// root real unless det Sigma falls by a factor e^(10 n) from there.
+// Parameters as the per-point residuals: ln G_s, ln lambda, ln eta0, the two nuisance blocks.
+struct JointResidualBlock {
+  ViscosityObservation observation;
+  std::vector<RelativeViscosityPoint> points;
+  bool plasma_viscosity_is_parameter = false;
+  int nuisances = 0;
+  bool normalisation = false;           // false: the whitened residuals; true: the normalisation
+  double ln_reference_determinant = 0.0;
+  static constexpr double kShiftPerPoint = 10.0;
+
+  WhitenedResiduals at(double const* const* parameters) const {
+    ViscosityObservation with = observation;
+    with.plasma_viscosity = std::exp(parameters[2][0]);
+    for (int k = 0; k < nuisances; ++k) with.nuisance.push_back(parameters[3 + k][0]);
+    return whiten(joint_residuals(with, points, std::exp(parameters[0][0]), std::exp(parameters[1][0]),
+                                  plasma_viscosity_is_parameter));
+  }
+  bool operator()(double const* const* parameters, double* residuals) const {
+    const WhitenedResiduals w = at(parameters);
+    if (!w.ok) return false;
+    if (!normalisation) {
+      for (Eigen::Index i = 0; i < w.whitened.size(); ++i) residuals[i] = w.whitened(i);
+      return true;
+    }
     const double argument =
-        std::log(std::max(measured.sd * measured.sd + p.sd * p.sd, 1e-300)) - ln_reference_variance + kShift;
+        w.log_determinant - ln_reference_determinant + kShiftPerPoint * static_cast<double>(points.size());
     if (!(argument > 0.0)) return false;
-    residual[0] = std::sqrt(argument);
-    return std::isfinite(residual[0]);
+    residuals[0] = std::sqrt(argument);
+    return std::isfinite(residuals[0]);
   }
 };
+
+ceres::CostFunction* joint_cost(JointResidualBlock block) {
+  const int residuals = block.normalisation ? 1 : static_cast<int>(block.points.size());
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<JointResidualBlock, ceres::CENTRAL>(
+      new JointResidualBlock(std::move(block)));
+  for (int k = 0; k < 3 + kMaxModelNuisances; ++k) cost->AddParameterBlock(1);
+  cost->SetNumResiduals(residuals);
+  return cost;
+}
 
 // A Gaussian prior on one parameter written as a residual: the plateau estimate of eta0 on
 // ln eta0, a model nuisance's prior.
@@ -97,6 +124,14 @@ struct GaussianPrior {
     return true;
   }
 };
+
+std::vector<RelativeViscosityPoint> used_subset(const std::vector<RelativeViscosityPoint>& points,
+                                               const std::vector<bool>& used) {
+  std::vector<RelativeViscosityPoint> subset;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (used[i]) subset.push_back(points[i]);
+  return subset;
+}
 
 std::vector<bool> select_inside(const ViscosityObservation& obs, const std::vector<RelativeViscosityPoint>& points,
                                 const FitParameters& x) {
@@ -259,20 +294,23 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     }
     ceres::Problem problem;
     std::vector<ceres::ResidualBlockId> normalisation_blocks;
-    for (std::size_t i = 0; i < sample.points.size(); ++i) {
-      if (!used[i]) continue;
-      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
-          new WeightedResidual(residuals[i]));
-      problem.AddResidualBlock(cost, make_loss(options), &x.ln_shear_modulus, &x.ln_lambda,
-                               &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]);
-      if (options.loss != RobustLoss::none) continue;
-      const auto [measured, p] = residuals[i].at(&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity,
-                                                 &x.nuisance[0], &x.nuisance[1]);
-      auto* normalisation = new ceres::NumericDiffCostFunction<LogVarianceResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
-          new LogVarianceResidual{residuals[i].at,
-                                  std::log(std::max(measured.sd * measured.sd + p.sd * p.sd, 1e-300))});
-      normalisation_blocks.push_back(problem.AddResidualBlock(normalisation, nullptr, &x.ln_shear_modulus, &x.ln_lambda,
-                                                              &x.ln_plasma_viscosity, &x.nuisance[0], &x.nuisance[1]));
+    const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
+                                         &x.nuisance[1]};
+    if (options.loss == RobustLoss::none) {
+      JointResidualBlock joint{obs, used_subset(sample.points, used), fit_eta0, n_nuisances};
+      problem.AddResidualBlock(joint_cost(joint), nullptr, blocks);
+      joint.normalisation = true;
+      const WhitenedResiduals start = joint.at(blocks.data());
+      joint.ln_reference_determinant = start.ok ? start.log_determinant : 0.0;
+      normalisation_blocks.push_back(problem.AddResidualBlock(joint_cost(joint), nullptr, blocks));
+    } else {
+      // A robust loss acts on each point's own residual: the points are taken as independent.
+      for (std::size_t i = 0; i < sample.points.size(); ++i) {
+        if (!used[i]) continue;
+        auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
+            new WeightedResidual(residuals[i]));
+        problem.AddResidualBlock(cost, make_loss(options), blocks);
+      }
     }
     std::vector<double*> free_blocks = {&x.ln_shear_modulus};
     problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, lo);
@@ -398,6 +436,13 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       ++result.degrees_of_freedom;
     }
     result.points.push_back(f);
+  }
+  if (options.loss == RobustLoss::none) {  // chi^2 of the joint likelihood: the whitened residuals
+    const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
+                                         &x.nuisance[1]};
+    const WhitenedResiduals w =
+        JointResidualBlock{obs, used_subset(sample.points, used), fit_eta0, n_nuisances}.at(blocks.data());
+    if (w.ok) result.chi_square = w.whitened.squaredNorm();
   }
   result.degrees_of_freedom -= fitted_to_data;
   const int skipped = static_cast<int>(std::count(used.begin(), used.end(), false));

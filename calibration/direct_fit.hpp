@@ -1,10 +1,14 @@
 #pragma once
 // Direct fit of ln G_s (optionally ln lambda) to all eta_re(phi, gamma_dot) points inside the
-// model's range by weighted least squares (Ceres), with a Laplace (Gauss-Newton) covariance.
+// model's range by generalised least squares (Ceres): the residuals are whitened with the joint
+// covariance of measurement and model errors (joint_likelihood.hpp; the model's errors are
+// correlated between points), and the likelihood's normalisation is kept, so that the fit is the
+// posterior's mode (posterior.hpp). With a robust loss the points are taken as independent and
+// the normalisation is left out. Laplace (Gauss-Newton) covariance.
 // eta0 is by default a nuisance parameter ln eta0 with the plateau estimate as a Gaussian prior
 // (a prior residual (ln eta0 - ln eta0_hat) / (se / eta0_hat)), so that its error, common to all
-// points, reaches G_s's interval. A model's nuisance parameters (a surrogate family's offset c
-// and box correction beta; viscosity_model.hpp) enter the same way: each a parameter with its
+// points, reaches G_s's interval. A model's nuisance parameters (a surrogate family's offset c;
+// viscosity_model.hpp) enter the same way: each a parameter with its
 // prior as a residual (v - mean) / sd, bounded to its prior's support.
 #include <string>
 #include <vector>
@@ -20,7 +24,7 @@ namespace rbcal::calibration {
 
 enum class RobustLoss { none, huber, cauchy };
 
-// The most nuisance parameters a model may have (viscosity_model.hpp): the offset and the box.
+// The most nuisance parameters a model may have (viscosity_model.hpp; the family has one).
 inline constexpr int kMaxModelNuisances = 2;
 
 // The message of a fit whose set of points inside the model's range did not settle.
@@ -59,7 +63,8 @@ struct FittedPoint {
   double capillary_number = 0.0;   // at the estimate
   double predicted_eta_re = 0.0;   // model at the estimate
   double predicted_sd = 0.0;       // model's predictive sd at the estimate
-  double weighted_residual = 0.0;  // (eta_re - predicted) / sqrt(eta_re_sd^2 + predicted_sd^2)
+  // (eta_re - predicted) / sqrt(eta_re_sd^2 + predicted_sd^2): the point on its own, as plotted
+  double weighted_residual = 0.0;
 };
 
 // Where an edge fit (a fit that would leave the model's Ca range with every point) holds G_s.
@@ -85,7 +90,9 @@ struct DirectFitResult {
   ModelEdge model_edge = ModelEdge::none;
   std::string model_edge_reason;  // the message that says so, empty when none
   bool converged = false;
-  double chi_square = 0.0;  // sum of squared weighted residuals over used points
+  // Over the used points: the squared whitened residuals (without a robust loss), else the
+  // squared weighted residuals.
+  double chi_square = 0.0;
   int degrees_of_freedom = 0;
   double plasma_viscosity = 0.0;   // eta0 at the estimate [Pa s] (the plateau value when fixed)
   bool plasma_viscosity_fitted = false;

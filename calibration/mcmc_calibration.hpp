@@ -13,8 +13,8 @@
 namespace rbcal::calibration {
 
 // Walkers per ensemble when McmcOptions::walkers is 0: 8 per parameter, at least 16. Fewer
-// left the pilot of a four-parameter posterior (G_s, eta0, the offset and the box correction)
-// with walkers stranded in a tail, and the independence proposal fitted to it failed
+// left the pilot of a four-parameter posterior (G_s, eta0, the offset and the box correction,
+// then sampled; now integrated out, surrogate/offset_family.hpp) with walkers stranded in a tail, and the independence proposal fitted to it failed
 // (docs/library.md, "The box twins").
 int automatic_walkers(int parameters);
 

@@ -31,7 +31,7 @@ Extremes model_extremes(double phi, const surrogate::ViscosityModel& model, cons
   } else {
     lambdas.push_back(setup.lambda);
   }
-  // A model's nuisance parameters (the offset, the box correction) move it too: every
+  // A model's nuisance parameters (the offset) move it too: every
   // combination of their prior's min, mean and max is tried, so that no point is dropped that
   // another value of them could reach.
   std::vector<std::vector<double>> settings{{}};

@@ -1,5 +1,7 @@
 #include "calibration/posterior.hpp"
 
+#include "calibration/joint_likelihood.hpp"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -113,18 +115,11 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
   const double lambda_value = lambda(theta);
   const double sigma_d = discrepancy(theta);
   const ViscosityObservation at = observation_at(theta);
-  double sum = 0.0;
-  for (const auto& point : points_) {
-    if (options_.reject_outside_model_range && !at.inside_range(point, shear_modulus, lambda_value))
-      return -std::numeric_limits<double>::infinity();
-    const auto p = at.predict(point, shear_modulus, lambda_value);
-    const auto measured = observed_relative_viscosity(point, plasma_viscosity_index_ >= 0, at.plasma_viscosity);
-    const double variance = measured.sd * measured.sd + p.sd * p.sd + std::pow(sigma_d * p.eta_re, 2);
-    const double r = measured.eta_re - p.eta_re;
-    sum += r * r / variance + std::log(2.0 * std::numbers::pi * variance);
-  }
-  const double result = -0.5 * sum;
-  return std::isfinite(result) ? result : -std::numeric_limits<double>::infinity();
+  if (options_.reject_outside_model_range)
+    for (const auto& point : points_)
+      if (!at.inside_range(point, shear_modulus, lambda_value)) return -std::numeric_limits<double>::infinity();
+  return whiten(joint_residuals(at, points_, shear_modulus, lambda_value, plasma_viscosity_index_ >= 0, sigma_d))
+      .log_likelihood();
 }
 
 double LogPosterior::operator()(const Eigen::VectorXd& theta) const {

@@ -2,11 +2,12 @@
 // Log posterior of theta = (ln G_s [, ln lambda] [, ln sigma_d] [, ln eta0] [, model nuisances])
 // for one sample.
 //
-// Likelihood (independent Gaussian errors on eta_re):
-//   eta_re_i ~ N(m_i, v_i),  m_i = model eta_re(phi_i, Ca_i(G_s), lambda),
-//   v_i = eta_re_sd_i^2 + model sd_i^2 + (sigma_d * m_i)^2,
-// where sigma_d is a relative model-discrepancy scale (what neither the measurement error nor
-// the model's own uncertainty explains). With eta0 a parameter, eta_re_i = eta_i / eta0 with
+// Likelihood (Gaussian, calibration/joint_likelihood.hpp):
+//   eta_re ~ N(m, Sigma),  m_i = model eta_re(phi_i, Ca_i(G_s), lambda),
+//   Sigma = diag(eta_re_sd_i^2 + (sigma_d * m_i)^2) + C,
+// C the model's joint predictive covariance at the points (its errors are correlated between
+// points; the diagonal is each point's model sd^2), and sigma_d a relative model-discrepancy
+// scale (what neither the measurement error nor the model's own uncertainty explains). With eta0 a parameter, eta_re_i = eta_i / eta0 with
 // sd se(eta_i) / eta0 and Ca_i uses that eta0: eta0's error, common to every point, is then
 // carried by its prior instead of being folded into each point as if independent.
 // Priors (independent):
@@ -15,7 +16,7 @@
 //   ln sigma_d ~ normal(ln discrepancy_prior_median, discrepancy_prior_log_sd)  (weakly informative)
 //   ln eta0    ~ normal(ln eta0_hat, se(eta0_hat) / eta0_hat)  (the plasma plateau's estimate)
 //   each of the model's nuisance parameters (surrogate/viscosity_model.hpp; a surrogate family's
-//                offset c and box correction beta) ~ its prior, normal(mean, sd) truncated to
+//                offset c) ~ its prior, normal(mean, sd) truncated to
 //                [min, max]: one number common to every point, so its error reaches G_s in full
 #include <string>
 #include <vector>

@@ -142,7 +142,7 @@ void run_family(const SurrogateFamilyOptions& o) {
   std::printf("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", o.prior_mean,
               o.prior_sd, family.members().front().offset, family.members().back().offset);
   if (box)
-    std::printf("  box correction      beta normal(%.4g, %.4g) truncated to -0.5 .. 1 (%s)\n", box->prior.mean,
+    std::printf("  box correction      beta normal(%.4g, %.4g), integrated out (%s)\n", box->prior.mean,
                 box->prior.sd, box->source.c_str());
   std::printf("  common range        phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
               r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);

@@ -90,6 +90,20 @@ double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::V
   return variance_given(cross_covariance(x), h_at_x);
 }
 
+Eigen::MatrixXd GaussianProcess::latent_covariance(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const {
+  const Eigen::Index q = x_rows.rows();
+  if (h_rows.rows() != q) throw std::invalid_argument("GaussianProcess: one basis row per query point needed");
+  Eigen::MatrixXd k_star(scaled_points_.cols(), q);
+  for (Eigen::Index j = 0; j < q; ++j) k_star.col(j) = cross_covariance(x_rows.row(j).transpose());
+  Eigen::MatrixXd prior(q, q);
+  for (Eigen::Index i = 0; i < q; ++i)
+    for (Eigen::Index j = 0; j <= i; ++j)
+      prior(i, j) = prior(j, i) = kernel_(x_rows.row(i).transpose(), x_rows.row(j).transpose());
+  const Eigen::MatrixXd v = k_cholesky_.matrixL().solve(k_star);
+  const Eigen::MatrixXd r = h_rows.transpose() - k_inverse_basis_.transpose() * k_star;  // m x q
+  return prior - v.transpose() * v + r.transpose() * a_cholesky_.solve(r);
+}
+
 GaussianProcessPrediction GaussianProcess::predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
                                                    const Eigen::MatrixXd& h_jacobian) const {
   const Eigen::Index n = scaled_points_.cols(), d = x.size();

@@ -61,6 +61,10 @@ class GaussianProcess {
   GaussianProcessPrediction predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
                                     const Eigen::MatrixXd& h_jacobian) const;
   double latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const;
+  // Joint covariance of the latent values at several points (row i of x_rows: a point, of
+  // h_rows: its basis), eq. 2.42 for every pair: k(x_i, x_j) - k_i^T K^-1 k_j + R_i^T A^-1 R_j.
+  // Its diagonal is latent_variance (not clipped at 0 here: the matrix is kept whole).
+  Eigen::MatrixXd latent_covariance(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const;
 
   // GLS estimate beta = A^-1 H^T K^-1 y (eq. 2.42's beta-bar) and its covariance A^-1.
   const Eigen::VectorXd& mean_coefficients() const { return beta_; }

@@ -9,7 +9,7 @@ namespace rbcal::surrogate {
 
 namespace {
 
-constexpr double kBoxMin = -0.5, kBoxMax = 1.0;  // the box correction's truncation
+constexpr double kBoxMin = -0.5, kBoxMax = 1.0;  // where the box correction's prior mean may lie
 
 }  // namespace
 
@@ -84,26 +84,64 @@ std::vector<double> OffsetFamilyModel::weights(double offset) const {
   return w;
 }
 
-std::vector<ModelNuisance> OffsetFamilyModel::nuisances() const {
-  std::vector<ModelNuisance> list{offset_};
-  if (box_)
-    list.push_back({"box_beta", "box correction, ln eta_bulk = (1 + beta) ln eta_re", box_->mean, box_->sd, kBoxMin,
-                    kBoxMax});
-  return list;
-}
+std::vector<ModelNuisance> OffsetFamilyModel::nuisances() const { return {offset_}; }
 
 ViscosityPrediction OffsetFamilyModel::predict(double phi, double capillary_number, double viscosity_ratio) const {
-  const ViscosityPrediction p = predict_at_offset(phi, capillary_number, viscosity_ratio, offset_.mean);
-  return box_ ? with_box_correction(p, box_->mean) : p;
+  return predict_with(phi, capillary_number, viscosity_ratio, {offset_.mean});
+}
+
+OffsetFamilyModel::Boxed OffsetFamilyModel::boxed(const ViscosityPrediction& p) const {
+  if (!box_) return {p, p.sd, 0.0};
+  Boxed b{with_box_correction(p, box_->mean), 0.0, 0.0};
+  b.sd_without_box = b.prediction.sd;
+  b.box_gradient = b.prediction.eta_re * std::log(p.eta_re);
+  b.prediction.sd = std::hypot(b.sd_without_box, box_->sd * b.box_gradient);
+  return b;
 }
 
 ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary_number, double viscosity_ratio,
                                                     const std::vector<double>& values) const {
-  if (values.size() != (box_ ? 2u : 1u))
-    throw std::invalid_argument("offset family: expected " + std::to_string(box_ ? 2 : 1) + " nuisance value(s), got " +
+  if (values.size() != 1u)
+    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
                                 std::to_string(values.size()));
-  const ViscosityPrediction p = predict_at_offset(phi, capillary_number, viscosity_ratio, values[0]);
-  return box_ ? with_box_correction(p, values[1]) : p;
+  return boxed(predict_at_offset(phi, capillary_number, viscosity_ratio, values[0])).prediction;
+}
+
+JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ViscosityQuery>& queries,
+                                                          const std::vector<double>& values) const {
+  const double offset = values.empty() ? offset_.mean : values.at(0);
+  if (values.size() > 1u)
+    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
+                                std::to_string(values.size()));
+  JointViscosityPrediction out;
+  const auto n = static_cast<Eigen::Index>(queries.size());
+  Eigen::VectorXd sd(n), box_gradient(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+    const Boxed b = boxed(predict_at_offset(q.phi, q.capillary_number, q.viscosity_ratio, offset));
+    out.points.push_back(b.prediction);
+    sd(i) = b.sd_without_box;
+    box_gradient(i) = b.box_gradient;
+  }
+  // The bracketing members' correlations, weighted linearly in c.
+  const double h = members_[1].offset - members_[0].offset;
+  const double s = std::clamp((offset - members_.front().offset) / h, 0.0, static_cast<double>(members_.size() - 1));
+  const auto lower = std::min(static_cast<std::size_t>(std::floor(s)), members_.size() - 2);
+  const double t = s - static_cast<double>(lower);
+  Eigen::MatrixXd correlation = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t k : {lower, lower + 1}) {
+    const double weight = k == lower ? 1.0 - t : t;
+    if (weight == 0.0) continue;
+    const Eigen::MatrixXd c = members_[k].model->predict_joint(queries, {}).covariance;
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const double scale = std::sqrt(std::max(c(i, i), 0.0) * std::max(c(j, j), 0.0));
+        correlation(i, j) += weight * (i == j ? 1.0 : scale > 0.0 ? c(i, j) / scale : 0.0);
+      }
+  }
+  out.covariance = sd.asDiagonal() * correlation * sd.asDiagonal();
+  if (box_) out.covariance += box_->sd * box_->sd * box_gradient * box_gradient.transpose();
+  return out;
 }
 
 ViscosityPrediction with_box_correction(const ViscosityPrediction& p, double beta) {

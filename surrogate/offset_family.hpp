@@ -4,14 +4,23 @@
 // - the immersed boundary's offset c: one model per offset (each built from the same runs moved
 //   to their effective volume fraction at that c, `rbcal library effective-phi --offset C`),
 //   interpolated in c, with a prior on c;
-// - optionally the box correction beta: ln eta_bulk = (1 + beta) ln eta_re, with a prior from
-//   runs of the same points in a taller box (docs/library.md). ln eta_re grows about as
-//   alpha phi, so beta rescales alpha: a bias that vanishes in the dilute limit, as the wall
-//   layering that causes it does.
+// - optionally the box correction beta: ln eta_bulk = (1 + beta) ln eta_re, with a prior
+//   normal(mean, sd) from runs of the same points in a taller box (docs/library.md). ln eta_re
+//   grows about as alpha phi, so beta rescales alpha: a bias that vanishes in the dilute limit,
+//   as the wall layering that causes it does.
 //
-// Why parameters: each is one number common to every run, so its uncertainty shifts the whole
-// surface together. Entered in each run's sd it would average away over a sample's points; as a
-// parameter of the calibration it reaches G_s's interval in full (docs/calibration.md).
+// Each is one number common to every run, so its uncertainty shifts the whole surface together.
+// Entered in each point's sd it would average away over a sample's points. The offset is
+// therefore a parameter of the calibration. The box correction enters linearly in ln eta, so it
+// is integrated out in closed form instead: the model predicts at beta's mean, and its joint
+// covariance (predict_joint) carries sd^2 g g^T with g_i = d eta_i / d beta = eta_i ln eta_re_i,
+// an error that moves every point together and so reaches G_s's interval in full
+// (docs/calibration.md); predict's sd includes it. As a sampled parameter it had left the MCMC's
+// walkers stranded.
+//
+// The joint covariance at offset c: each point's sd as predict gives it, correlated as the two
+// members that bracket c correlate their points (their correlation matrices weighted linearly
+// in c: a convex sum, so a valid correlation matrix).
 //
 // Interpolation in c: members at equally spaced offsets c_0 < ... < c_n; between c_i and c_{i+1}
 // a cubic Hermite (Catmull-Rom) of the members' predictions, with central-difference slopes
@@ -31,7 +40,7 @@ struct OffsetFamilyMember {
   std::shared_ptr<const ViscosityModel> model;
 };
 
-// The box correction's prior: normal(mean, sd), truncated to [-0.5, 1] (a factor on ln eta_re
+// The box correction's prior: normal(mean, sd), its mean inside (-0.5, 1) (a factor on ln eta_re
 // between 0.5 and 2, far wider than any measured).
 struct BoxCorrectionPrior {
   double mean = 0.0, sd = 0.0;
@@ -48,9 +57,11 @@ class OffsetFamilyModel final : public ViscosityModel {
                     std::optional<BoxCorrectionPrior> box = std::nullopt);
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
-  // values: c, then beta when the family has a box correction.
+  // values: c (beta is at its mean: see above).
   ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                    const std::vector<double>& values) const override;
+  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+                                         const std::vector<double>& values) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }
   std::vector<ModelNuisance> nuisances() const override;
@@ -65,6 +76,15 @@ class OffsetFamilyModel final : public ViscosityModel {
   std::vector<double> weights(double offset) const;
 
  private:
+  // A prediction at the box correction's mean, its sd with beta's share (sd_without_box without
+  // it), and d eta / d beta.
+  struct Boxed {
+    ViscosityPrediction prediction;
+    double sd_without_box = 0.0;
+    double box_gradient = 0.0;
+  };
+  Boxed boxed(const ViscosityPrediction& p) const;
+
   std::vector<OffsetFamilyMember> members_;
   ModelNuisance offset_;
   std::optional<BoxCorrectionPrior> box_;

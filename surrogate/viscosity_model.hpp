@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 namespace rbcal::surrogate {
 
 struct ViscosityPrediction {
@@ -25,14 +27,25 @@ struct ParameterRange {
   double lambda_min = 0.0, lambda_max = 0.0;
 };
 
+// One point at which the model is asked: (phi, Ca, lambda).
+struct ViscosityQuery {
+  double phi = 0.0, capillary_number = 1.0, viscosity_ratio = 1.0;
+};
+
+// The model at several points at once: each point's prediction, and the joint covariance of the
+// predicted eta_re (model uncertainty only; its diagonal is each point's sd^2).
+struct JointViscosityPrediction {
+  std::vector<ViscosityPrediction> points;
+  Eigen::MatrixXd covariance;
+};
+
 // A parameter of the model that is not known exactly and that the calibration therefore
 // carries as a nuisance parameter with this prior: normal(mean, sd) truncated to [min, max].
-// Two exist (surrogate/offset_family.hpp): the immersed boundary's offset c, in lattice
+// One exists (surrogate/offset_family.hpp): the immersed boundary's offset c, in lattice
 // spacings, which sets the volume fraction a finite-resolution run stands for (docs/library.md,
-// "The effective volume fraction"), and the box correction beta, ln eta_bulk = (1 + beta) ln
-// eta_re, which carries the library's 8a gap to a bulk suspension.
+// "The effective volume fraction").
 struct ModelNuisance {
-  std::string name;  // parameter name in reports: "offset_c", "box_beta"
+  std::string name;  // parameter name in reports: "offset_c"
   std::string what;  // one line for the report
   double mean = 0.0, sd = 0.0;
   double min = 0.0, max = 0.0;
@@ -52,6 +65,26 @@ class ViscosityModel {
   virtual ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                            const std::vector<double>& /*nuisance_values*/) const {
     return predict(phi, capillary_number, viscosity_ratio);
+  }
+
+  // The model at several points with the joint covariance of its errors there, at given nuisance
+  // values (empty: their means). The errors of a surrogate at neighbouring points are not
+  // independent: the same runs inform both, and a systematic error common to every run moves all
+  // points together. A likelihood that treats them as independent lets them average away over a
+  // sample's points. This default knows no correlation: the covariance is diagonal.
+  virtual JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+                                                 const std::vector<double>& nuisance_values) const {
+    JointViscosityPrediction out;
+    const auto n = static_cast<Eigen::Index>(queries.size());
+    out.covariance = Eigen::MatrixXd::Zero(n, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+      out.points.push_back(nuisance_values.empty()
+                               ? predict(q.phi, q.capillary_number, q.viscosity_ratio)
+                               : predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
+      out.covariance(i, i) = out.points.back().sd * out.points.back().sd;
+    }
+    return out;
   }
 };
 

@@ -137,6 +137,24 @@ ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_num
   return out;
 }
 
+JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ViscosityQuery>& queries,
+                                                          const std::vector<double>& /*nuisance_values*/) const {
+  JointViscosityPrediction out;
+  const auto n = static_cast<Eigen::Index>(queries.size());
+  Eigen::MatrixXd x_rows(n, 3), h_rows(n, 1 + terms_.ca + terms_.lambda);
+  Eigen::VectorXd eta(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+    out.points.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
+    const Eigen::VectorXd x = input(q.phi, q.capillary_number, q.viscosity_ratio);
+    x_rows.row(i) = x.transpose();
+    h_rows.row(i) = basis(x).transpose();
+    eta(i) = out.points.back().eta_re;
+  }
+  out.covariance = eta.asDiagonal() * process_.latent_covariance(x_rows, h_rows) * eta.asDiagonal();
+  return out;
+}
+
 double ViscositySurrogate::log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const {
   const Eigen::VectorXd x = input(phi, capillary_number, viscosity_ratio);
   return std::sqrt(process_.latent_variance(x, basis(x)));

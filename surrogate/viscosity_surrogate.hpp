@@ -46,6 +46,10 @@ class ViscositySurrogate final : public ViscosityModel {
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
   ParameterRange range() const override { return range_; }
+  // Covariance from the process's joint latent covariance of ln eta_re, carried to eta_re by the
+  // delta method as predict's sd is: cov(eta_i, eta_j) = eta_i eta_j cov(y_i, y_j).
+  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+                                         const std::vector<double>& nuisance_values) const override;
 
   // Latent predictive sd of ln eta_re (= relative sd of eta_re).
   double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;

@@ -143,3 +143,41 @@ TEST(Posterior, OffsetOfAFamilyHasATruncatedNormalPrior) {
   at_mean.model_nuisances_as_parameters = false;
   EXPECT_EQ(LogPosterior(family, eta0, {data}, at_mean).dimension(), 1);
 }
+
+// The box correction enters the likelihood as an error common to every point: with members whose
+// errors are independent, Sigma = D + sd_beta^2 g g^T (g_i = d eta_i / d beta), whose inverse and
+// determinant the Sherman-Morrison formula and the matrix determinant lemma give in closed form,
+// independently of the Cholesky factorisation the posterior uses.
+TEST(Posterior, BoxCorrectionIsARankOneErrorCommonToEveryPoint) {
+  const double box_sd = 0.07, eta0 = 1.5e-3, g_s = 1e-6;
+  const auto family = test_models::analytic_offset_family(1.0, 0.75, 0.15, rbcal::surrogate::BoxCorrectionPrior{0.1, box_sd});
+  const auto plain = test_models::analytic_offset_family(1.0, 0.75, 0.15);
+  const std::vector<RelativeViscosityPoint> data = {point(0.2, 5.0, 2.0, 0.05), point(0.3, 50.0, 2.5, 0.06),
+                                                    point(0.4, 500.0, 3.1, 0.08)};
+  const LogPosterior posterior(family, eta0, data, {});
+  ASSERT_EQ(posterior.dimension(), 2);  // ln G_s and the offset: beta is not a parameter
+  const double offset = 0.8;
+  const Eigen::Vector2d theta(std::log(g_s), offset);
+  const double s2 = box_sd * box_sd;
+  double quadratic = 0.0, log_det = 0.0, g_d_r = 0.0, g_d_g = 0.0, independent_sum = 0.0;
+  for (const auto& x : data) {
+    const double ca = capillary_number(eta0, x.shear_rate, kDefaultCellRadius, g_s);
+    const auto p = plain.predict_with(x.phi, ca, 5.0, {offset});
+    const double eta = std::pow(p.eta_re, 1.1);          // at beta's mean
+    const double sd = 1.1 * eta / p.eta_re * p.sd;       // the chain rule
+    const double g = eta * std::log(p.eta_re);           // d eta / d beta
+    const double d = x.eta_re_sd * x.eta_re_sd + sd * sd;
+    const double r = x.eta_re - eta;
+    quadratic += r * r / d;
+    log_det += std::log(d);
+    g_d_r += g * r / d;
+    g_d_g += g * g / d;
+    independent_sum += r * r / (d + s2 * g * g) + std::log(d + s2 * g * g);
+  }
+  const double expected = -0.5 * (quadratic - s2 * g_d_r * g_d_r / (1.0 + s2 * g_d_g) + log_det +
+                                  std::log(1.0 + s2 * g_d_g) + 3.0 * std::log(2.0 * std::numbers::pi));
+  EXPECT_NEAR(posterior.log_likelihood(theta), expected, 1e-10);
+  // The same variances taken as independent per point give another likelihood.
+  const double independent = -0.5 * (independent_sum + 3.0 * std::log(2.0 * std::numbers::pi));
+  EXPECT_GT(std::abs(posterior.log_likelihood(theta) - independent), 1e-3);
+}

@@ -117,6 +117,43 @@ TEST(GaussianProcess, PredictiveVarianceIncludesMeanCoefficientUncertainty) {
   EXPECT_NEAR(gp.latent_variance(far, h), expected, 1e-9 * expected);
 }
 
+// The joint latent covariance against the conditioning rule it must obey: observing y at x_j with
+// total noise v_j lowers the latent variance at x_i by cov(i, j)^2 / (var(j) + v_j). The refit with
+// the extra point is an independent computation (a new factorisation, beta re-estimated).
+TEST(GaussianProcess, JointLatentCovarianceObeysTheConditioningRule) {
+  const GaussianProcessData data = random_data(20, 11);
+  const GaussianProcessHyperparameters hp = some_hyperparameters();
+  const GaussianProcess gp(data, hp);
+  Eigen::MatrixXd x(3, 3), h(3, 2);
+  x << 0.2, 0.3, 0.4, 0.25, 0.35, 0.5, 0.9, 0.1, 0.8;
+  for (int i = 0; i < 3; ++i) h.row(i) << x(i, 0), x(i, 0) * x(i, 1);
+  const Eigen::MatrixXd cov = gp.latent_covariance(x, h);
+  EXPECT_NEAR((cov - cov.transpose()).norm(), 0.0, 1e-15);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(cov(i, i), gp.latent_variance(x.row(i).transpose(), h.row(i).transpose()), 1e-12);
+  EXPECT_GT(cov(0, 1), 0.1 * std::sqrt(cov(0, 0) * cov(1, 1)));  // neighbours are correlated
+  for (int j = 0; j < 3; ++j) {
+    GaussianProcessData more = data;
+    const Eigen::Index n = data.targets.size();
+    more.inputs.conservativeResize(n + 1, 3);
+    more.targets.conservativeResize(n + 1);
+    more.noise_variances.conservativeResize(n + 1);
+    more.basis.conservativeResize(n + 1, 2);
+    more.inputs.row(n) = x.row(j);
+    more.targets(n) = 1.0;  // the value does not enter variances
+    more.noise_variances(n) = 2e-4;
+    more.basis.row(n) = h.row(j);
+    const GaussianProcess conditioned(more, hp);
+    const double v_j = conditioned.total_noise_variance(n);
+    for (int i = 0; i < 3; ++i) {
+      const double expected = cov(i, i) - cov(i, j) * cov(i, j) / (cov(j, j) + v_j);
+      EXPECT_NEAR(conditioned.latent_variance(x.row(i).transpose(), h.row(i).transpose()), expected,
+                  1e-8 * cov(i, i))
+          << i << " given " << j;
+    }
+  }
+}
+
 TEST(HyperparameterFit, RecoversKnownLengthScalesOfASampledProcess) {
   // Draw one sample of a zero-mean-plus-constant GP with known hyper-parameters at 250
   // random points in [0, 1]^3, then fit; ML estimates scatter, so the tolerance is a

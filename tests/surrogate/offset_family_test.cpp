@@ -40,6 +40,35 @@ class KnownMember final : public ViscosityModel {
   ParameterRange box_;
 };
 
+// A member whose errors are correlated in phi, with a correlation length that grows with its
+// offset: corr = exp(-|phi_i - phi_j| / (0.1 + 0.2 c)).
+class CorrelatedMember final : public ViscosityModel {
+ public:
+  explicit CorrelatedMember(double offset) : offset_(offset) {}
+  ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+    ViscosityPrediction p;
+    p.eta_re = std::exp(4.0 * phi * (1.0 + 0.2 * offset_)) * (1.0 - 0.05 * std::log(ca)) + 0.0 * lambda;
+    p.sd = 0.02 * p.eta_re * (1.0 + offset_);
+    return p;
+  }
+  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& q,
+                                         const std::vector<double>& /*nuisance*/) const override {
+    JointViscosityPrediction out;
+    const auto n = static_cast<Eigen::Index>(q.size());
+    for (const auto& x : q) out.points.push_back(predict(x.phi, x.capillary_number, x.viscosity_ratio));
+    out.covariance.resize(n, n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j)
+        out.covariance(i, j) = out.points[i].sd * out.points[j].sd * correlation(q[i].phi, q[j].phi);
+    return out;
+  }
+  double correlation(double a, double b) const { return std::exp(-std::abs(a - b) / (0.1 + 0.2 * offset_)); }
+  ParameterRange range() const override { return {0.02, 0.6, 0.01, 3.2, 0.1, 10.0}; }
+
+ private:
+  double offset_;
+};
+
 double linear(double c) { return 0.8 - 0.6 * c; }
 double curved(double c) { return std::sin(3.0 * c); }
 
@@ -128,6 +157,46 @@ TEST(OffsetFamily, BoxCorrectionCarriesSdAndDerivativesByTheChainRule) {
   EXPECT_EQ(with_box_correction(p, 0.0).eta_re, 3.0);
 }
 
+// The joint covariance: each point's sd as predict gives it, correlated as the bracketing
+// members correlate (weighted linearly in c), plus the box correction's error sd_beta^2 g g^T with
+// g_i = eta_i ln eta_plain_i, common to every point.
+TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryPoint) {
+  std::vector<OffsetFamilyMember> members;
+  std::vector<std::shared_ptr<const CorrelatedMember>> known;
+  for (double c : {0.5, 0.75, 1.0}) {
+    known.push_back(std::make_shared<CorrelatedMember>(c));
+    members.push_back({c, known.back()});
+  }
+  const std::vector<ViscosityQuery> q = {{0.1, 0.1, 5.0}, {0.2, 0.5, 5.0}, {0.4, 2.0, 5.0}};
+  const OffsetFamilyModel plain(members, 0.75, 0.15);
+  const BoxCorrectionPrior box{0.1, 0.07};
+  const OffsetFamilyModel boxed(members, 0.75, 0.15, box);
+  for (double c : {0.75, 0.6}) {
+    const double t = c == 0.75 ? 0.0 : 0.4;  // 0.6 lies 40 % of the way from 0.5 to 0.75
+    const std::size_t lower = c == 0.75 ? 1 : 0;
+    const JointViscosityPrediction p = plain.predict_joint(q, {c});
+    const JointViscosityPrediction b = boxed.predict_joint(q, {c});
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const ViscosityPrediction single = plain.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
+      const ViscosityPrediction single_boxed = boxed.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
+      EXPECT_EQ(p.points[i].eta_re, single.eta_re);
+      EXPECT_NEAR(p.covariance(i, i), single.sd * single.sd, 1e-15);
+      EXPECT_NEAR(b.covariance(i, i), single_boxed.sd * single_boxed.sd, 1e-13);  // the diagonal is predict's sd^2
+      for (std::size_t j = 0; j < q.size(); ++j) {
+        const double r = (1.0 - t) * known[lower]->correlation(q[i].phi, q[j].phi) +
+                         t * known[lower + 1]->correlation(q[i].phi, q[j].phi);
+        const double sd_i = std::sqrt(p.covariance(i, i)), sd_j = std::sqrt(p.covariance(j, j));
+        EXPECT_NEAR(p.covariance(i, j), sd_i * sd_j * r, 1e-14) << c << " " << i << " " << j;
+        // Boxed: the chain rule scales each sd by (1 + beta) eta^beta, beta's error adds g g^T.
+        const double eta_i = p.points[i].eta_re, eta_j = p.points[j].eta_re;
+        const double slope_i = 1.1 * std::pow(eta_i, 0.1), slope_j = 1.1 * std::pow(eta_j, 0.1);
+        const double g_i = std::pow(eta_i, 1.1) * std::log(eta_i), g_j = std::pow(eta_j, 1.1) * std::log(eta_j);
+        EXPECT_NEAR(b.covariance(i, j), slope_i * slope_j * p.covariance(i, j) + 0.07 * 0.07 * g_i * g_j, 1e-12);
+      }
+    }
+  }
+}
+
 TEST(OffsetFamily, RangeIsTheMembersCommonRange) {
   std::vector<OffsetFamilyMember> members;
   members.push_back({0.6, std::make_shared<KnownMember>(0.6, linear, ParameterRange{0.05, 0.62, 0.01, 3.2, 0.1, 10.0})});
@@ -172,17 +241,23 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
   EXPECT_DOUBLE_EQ(any_family->nuisances()[0].sd, 0.15);
   EXPECT_TRUE(load_viscosity_model(dir / "single.json")->nuisances().empty());
 
-  // With a box correction: a second nuisance, kept with its source.
+  // With a box correction: kept with its source; integrated out, not a second nuisance.
   save_surrogate_family(members, 0.75, 0.15, dir / "boxed.json", BoxCorrectionRecord{{0.05, 0.04}, "twin runs"});
   const OffsetFamilyModel boxed = load_surrogate_family(dir / "boxed.json");
-  ASSERT_EQ(boxed.nuisances().size(), 2u);
-  EXPECT_EQ(boxed.nuisances()[1].name, "box_beta");
-  EXPECT_DOUBLE_EQ(boxed.nuisances()[1].mean, 0.05);
-  EXPECT_DOUBLE_EQ(boxed.nuisances()[1].sd, 0.04);
+  ASSERT_EQ(boxed.nuisances().size(), 1u);
+  ASSERT_TRUE(boxed.box_correction());
+  EXPECT_DOUBLE_EQ(boxed.box_correction()->mean, 0.05);
+  EXPECT_DOUBLE_EQ(boxed.box_correction()->sd, 0.04);
   EXPECT_EQ(rbcal::formats::read_json_file(dir / "boxed.json")["box_correction"]["source"], "twin runs");
-  const double plain = loaded.predict_at_offset(0.25, 0.2, 5.0, 0.75).eta_re;
-  EXPECT_NEAR(boxed.predict_with(0.25, 0.2, 5.0, {0.75, 0.2}).eta_re, std::pow(plain, 1.2), 1e-12);
-  EXPECT_NEAR(boxed.predict(0.25, 0.2, 5.0).eta_re, std::pow(plain, 1.05), 1e-12);  // at the means
+  const ViscosityPrediction plain = loaded.predict_at_offset(0.25, 0.2, 5.0, 0.75);
+  const ViscosityPrediction at_mean = boxed.predict(0.25, 0.2, 5.0);
+  EXPECT_NEAR(at_mean.eta_re, std::pow(plain.eta_re, 1.05), 1e-12);  // at beta's mean
+  // sd: the chain rule's, and beta's own share sd_beta eta ln eta_plain, in quadrature.
+  EXPECT_NEAR(at_mean.sd,
+              std::hypot(1.05 * at_mean.eta_re / plain.eta_re * plain.sd, 0.04 * at_mean.eta_re * std::log(plain.eta_re)),
+              1e-12);
+  EXPECT_EQ(boxed.predict_with(0.25, 0.2, 5.0, {0.6}).eta_re,
+            boxed.predict_joint({{0.25, 0.2, 5.0}}, {0.6}).points[0].eta_re);
 
   // A bad field inside a member is named with the member's path.
   nlohmann::json j = rbcal::formats::read_json_file(dir / "family.json");

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <random>
 
+#include <Eigen/Eigenvalues>
+
 #include "surrogate/case_proposal.hpp"
 #include "formats/json_file.hpp"
 #include "surrogate/surrogate_file.hpp"
@@ -44,6 +46,27 @@ TEST(ViscositySurrogate, BandsCoverTheKnownFunctionAtHeldOutPoints) {
   EXPECT_LE(coverage, 0.99);
   EXPECT_LT(worst_relative_error, 0.05);
   std::cout << "coverage of 95 % bands: " << coverage << ", worst relative error " << worst_relative_error << "\n";
+}
+
+// The joint prediction: each point as predict gives it, the diagonal its sd^2, neighbours strongly
+// correlated and distant points less, and a valid (positive semi-definite) covariance.
+TEST(ViscositySurrogate, JointPredictionCorrelatesNeighbours) {
+  const ViscositySurrogate& s = fitted_surrogate();
+  const std::vector<ViscosityQuery> q = {{0.2, 0.1, 2.0}, {0.21, 0.11, 2.0}, {0.35, 0.7, 8.0}, {0.08, 0.02, 1.0}};
+  const JointViscosityPrediction joint = s.predict_joint(q, {});
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const ViscosityPrediction single = s.predict(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio);
+    EXPECT_EQ(joint.points[i].eta_re, single.eta_re);
+    EXPECT_NEAR(joint.covariance(i, i), single.sd * single.sd, 1e-12 * single.sd * single.sd + 1e-300);
+  }
+  const auto correlation = [&](int i, int j) {
+    return joint.covariance(i, j) / std::sqrt(joint.covariance(i, i) * joint.covariance(j, j));
+  };
+  EXPECT_GT(correlation(0, 1), 0.8);
+  EXPECT_LT(std::abs(correlation(0, 2)), correlation(0, 1));
+  EXPECT_LT(std::abs(correlation(2, 3)), correlation(0, 1));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(joint.covariance);
+  EXPECT_GT(eigen.eigenvalues().minCoeff(), -1e-12 * eigen.eigenvalues().maxCoeff());
 }
 
 TEST(ViscositySurrogate, DerivativesMatchFiniteDifferences) {

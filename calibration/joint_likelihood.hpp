@@ -1,0 +1,41 @@
+#pragma once
+// The Gaussian likelihood of a sample's points with the model's errors correlated between them:
+//   eta_re ~ N(m, Sigma),  Sigma = diag(measurement sd_i^2 + (sigma_d m_i)^2) + C,
+// where m and C are the model's predictions and their joint covariance at the points
+// (surrogate/viscosity_model.hpp, predict_joint). The measurement errors are independent; the
+// model's are not: neighbouring points draw on the same runs, and an error common to every run
+// (the box correction) moves them all together. Shared by the posterior (its log likelihood) and
+// the direct fit (its whitened residuals), so that both answer the same question.
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "calibration/calibration_input.hpp"
+#include "calibration/viscosity_observation.hpp"
+
+namespace rbcal::calibration {
+
+struct JointResiduals {
+  std::vector<surrogate::ViscosityPrediction> predictions;  // one per point
+  Eigen::VectorXd residual;                                 // measured eta_re - predicted
+  Eigen::MatrixXd covariance;                               // Sigma
+};
+
+// at: eta0 and the model's nuisance values; relative_discrepancy: sigma_d (0 without it).
+JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector<RelativeViscosityPoint>& points,
+                               double shear_modulus, double lambda, bool plasma_viscosity_is_parameter,
+                               double relative_discrepancy = 0.0);
+
+struct WhitenedResiduals {
+  bool ok = false;                // false: Sigma is not finite and positive definite
+  Eigen::VectorXd whitened;       // L^-1 r with Sigma = L L^T: independent, unit variance
+  double log_determinant = 0.0;   // ln det Sigma
+  // -1/2 (|whitened|^2 + ln det Sigma + n ln 2 pi); -inf when not ok.
+  double log_likelihood() const;
+};
+
+// Where Sigma is singular (points with zero stated sd at which the model is certain) it gets a
+// jitter of 1e-12 of its mean diagonal.
+WhitenedResiduals whiten(const JointResiduals& joint);
+
+}  // namespace rbcal::calibration
