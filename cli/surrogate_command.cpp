@@ -135,8 +135,8 @@ void run_family(const SurrogateFamilyOptions& o) {
     if (o.box_source.empty()) throw CLI::ValidationError("--box-source", "say where the box correction's numbers come from");
     box = surrogate::BoxCorrectionRecord{{o.box_mean, o.box_sd}, o.box_source};
   }
-  surrogate::save_surrogate_family(members, o.prior_mean, o.prior_sd, o.output, box);
-  const surrogate::OffsetFamilyModel family = surrogate::load_surrogate_family(o.output);
+  const surrogate::OffsetFamilyModel family =
+      surrogate::save_surrogate_family(std::move(members), o.prior_mean, o.prior_sd, o.output, box);
   std::printf("rbcal surrogate family: %zu members -> %s\n", family.members().size(), o.output.c_str());
   const surrogate::ParameterRange r = family.range();
   std::printf("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", o.prior_mean,

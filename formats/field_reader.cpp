@@ -140,6 +140,12 @@ std::string FieldReader::text_or(const std::string& path, const std::string& fal
   return n->get<std::string>();
 }
 
+void FieldReader::expect_schema(const std::string& expected) const {
+  if (!root_.is_object()) fail("(top level)", "must be a JSON object");
+  const std::string schema = text("schema");
+  if (schema != expected) fail("schema", "must be \"" + expected + "\", got \"" + schema + "\"");
+}
+
 std::vector<double> FieldReader::fixed_numbers(const nlohmann::json& n, const std::string& path,
                                                std::size_t size) const {
   const std::string what = "must be an array of " + std::to_string(size) + " numbers";

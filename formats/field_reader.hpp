@@ -37,6 +37,9 @@ class FieldReader {
   double number_or(const std::string& path, double fallback, double lo, double hi) const;
   int integer_or(const std::string& path, int fallback, int lo, int hi) const;
   std::string text_or(const std::string& path, const std::string& fallback) const;
+  // The document must be a JSON object whose "schema" is `expected`: fails naming what it is
+  // (not an object, schema missing, not a string, or another schema).
+  void expect_schema(const std::string& expected) const;
   template <std::size_t N>
   std::array<double, N> numbers_or(const std::string& path, const std::array<double, N>& fallback) const {
     const nlohmann::json* n = find(path);

@@ -82,9 +82,7 @@ std::vector<PlanPoint> ParameterGrid::points() const {
 
 ParameterGrid plan_grid_from_json(const nlohmann::json& plan, const std::string& source) {
   FieldReader r(plan, source);
-  if (!plan.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string schema = r.text("schema");
-  if (schema != kPlanSchema) r.fail("schema", std::string("must be \"") + kPlanSchema + "\", got \"" + schema + "\"");
+  r.expect_schema(kPlanSchema);
   const bool has_grid = r.find("grid") != nullptr, has_points = r.find("points") != nullptr;
   if (has_grid && has_points) r.fail("points", "a plan has a grid or points, not both");
   if (has_points) return listed_points(r);

@@ -8,10 +8,7 @@ namespace rbcal::surrogate {
 
 LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesystem::path& source) {
   const formats::FieldReader r(j, source.string());
-  if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string schema = r.text("schema");
-  if (schema != formats::kCaseSchema)
-    r.fail("schema", std::string("must be \"") + formats::kCaseSchema + "\", got \"" + schema + "\"");
+  r.expect_schema(formats::kCaseSchema);
 
   LibraryCase c;
   c.id = source.stem().string();

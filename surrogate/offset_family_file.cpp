@@ -33,10 +33,7 @@ nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>
 
 OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std::string& source) {
   const formats::FieldReader r(j, source);
-  if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string schema = r.text("schema");
-  if (schema != formats::kSurrogateFamilySchema)
-    r.fail("schema", std::string("must be \"") + formats::kSurrogateFamilySchema + "\", got \"" + schema + "\"");
+  r.expect_schema(formats::kSurrogateFamilySchema);
   r.only_known_keys("", {"schema", "parameter", "prior", "box_correction", "members", "provenance"});
   r.only_known_keys("box_correction", {"mean", "sd", "source"});
   const double mean = r.number("prior.mean");
@@ -60,14 +57,15 @@ OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std:
   }
 }
 
-void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
+OffsetFamilyModel save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
                            const std::filesystem::path& file, const std::optional<BoxCorrectionRecord>& box) {
   std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.offset < b.offset; });
   std::vector<OffsetFamilyMember> check;
   for (const auto& m : members) check.push_back({m.offset, std::make_shared<ViscositySurrogate>(m.surrogate)});
-  (void)OffsetFamilyModel(std::move(check), prior_mean, prior_sd,  // refuse what could not be read back
-                          box ? std::optional<BoxCorrectionPrior>(box->prior) : std::nullopt);
+  OffsetFamilyModel family(std::move(check), prior_mean, prior_sd,  // refuse what could not be read back
+                           box ? std::optional<BoxCorrectionPrior>(box->prior) : std::nullopt);
   formats::write_json_atomically(file, surrogate_family_to_json(members, prior_mean, prior_sd, box));
+  return family;
 }
 
 OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file) {

@@ -37,7 +37,8 @@ nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>
 OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std::string& source);
 
 // Members sorted by offset; the constructor's checks (offset_family.hpp) are made before writing.
-void save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
+// Returns the family as written (what load_surrogate_family would read back).
+OffsetFamilyModel save_surrogate_family(std::vector<SurrogateFamilyMember> members, double prior_mean, double prior_sd,
                            const std::filesystem::path& file, const std::optional<BoxCorrectionRecord>& box = std::nullopt);
 OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file);
 

@@ -78,10 +78,7 @@ nlohmann::json surrogate_to_json(const ViscositySurrogate& s) {
 
 ViscositySurrogate surrogate_from_json(const nlohmann::json& j, const std::string& source) {
   const formats::FieldReader r(j, source);
-  if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string schema = r.text("schema");
-  if (schema != formats::kSurrogateSchema)
-    r.fail("schema", std::string("must be \"") + formats::kSurrogateSchema + "\", got \"" + schema + "\"");
+  r.expect_schema(formats::kSurrogateSchema);
 
   GaussianProcessHyperparameters hp;
   hp.log_signal_variance = r.number("hyperparameters.log_signal_variance");

@@ -22,10 +22,7 @@ std::string to_string(NodeVelocity v) { return v == NodeVelocity::IntervalMean ?
 
 SimulationCase case_from_json(const nlohmann::json& j, const std::string& source) {
   const formats::FieldReader r(j, source);
-  if (!j.is_object()) r.fail("(top level)", "must be a JSON object");
-  const std::string schema = r.text_or("schema", "");
-  if (schema != formats::kCaseSchema)
-    r.fail("schema", std::string("must be \"") + formats::kCaseSchema + "\", got \"" + schema + "\"");
+  r.expect_schema(formats::kCaseSchema);
 
   // The fields case_to_json writes are the fields a case file may have: one list for both.
   SimulationCase every_field;

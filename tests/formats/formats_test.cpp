@@ -61,6 +61,17 @@ TEST(FieldReader, NamesFileAndDottedFieldInOneShape) {
   EXPECT_EQ((r.numbers_or<2>("absent", {1.0, 2.0})), (std::array<double, 2>{1.0, 2.0}));
 }
 
+// The one check every reader starts with (surrogate, family, case, plan, simulation case).
+TEST(FieldReader, ExpectsAnObjectOfTheGivenSchema) {
+  EXPECT_NO_THROW(FieldReader(json{{"schema", "rbcal.x/1"}}, "f.json").expect_schema("rbcal.x/1"));
+  EXPECT_EQ(error_of([&] { FieldReader(json::array({1, 2}), "f.json").expect_schema("rbcal.x/1"); }),
+            "f.json: field (top level): must be a JSON object");
+  EXPECT_EQ(error_of([&] { FieldReader(json{{"a", 1}}, "f.json").expect_schema("rbcal.x/1"); }),
+            "f.json: field schema: missing");
+  EXPECT_EQ(error_of([&] { FieldReader(json{{"schema", "rbcal.x/2"}}, "f.json").expect_schema("rbcal.x/1"); }),
+            "f.json: field schema: must be \"rbcal.x/1\", got \"rbcal.x/2\"");
+}
+
 TEST(JsonFile, ReportsSyntaxErrorsWithLineAndWritesAtomically) {
   const auto file = temp_file("syntax.json");
   write_file_atomically(file, "{\n  \"a\": 1,,\n}\n");
