@@ -13,11 +13,11 @@
 #      0.45 0.6 0.75 0.9 1.05, equally spaced, OFFSET among them) joined into
 #      data/library/default/surrogate_family.json with the prior OFFSET +- OFFSET_SD
 #      (rbcal surrogate family), the model the calibration uses by default: the offset is
-#      then a nuisance parameter of every fit (docs/calibration.md). With BOX=auto the family
-#      also carries the box correction beta, its prior from the 8a/16a twin runs committed
-#      in data/cases/library_v2/results (scripts/box_twins.py); the default, BOX=none, leaves
-#      it out until enough twins are in and the MCMC mixes with it (docs/library.md, "The box
-#      twins").
+#      then a nuisance parameter of every fit (docs/calibration.md). With BOX=auto (the
+#      default since 2026-11-25, third session) the family also carries the box correction
+#      beta, its prior from the 8a/16a twin runs committed in data/cases/library_v2/results
+#      (scripts/box_twins.py), integrated out in every fit (docs/calibration.md); BOX=none
+#      leaves it out (docs/library.md, "The box twins").
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 # Under either method:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
@@ -97,7 +97,7 @@ if [ "${METHOD:-effective-phi}" != richardson ]; then
     members+=(--member "$c=$work/c$c/surrogate.json")
   done
   box=()
-  if [ "${BOX:-none}" = auto ]; then
+  if [ "${BOX:-auto}" = auto ]; then
     twins="$(python3 scripts/box_twins.py)"
     echo "$twins"
     prior="$(echo "$twins" | sed -n 's/^prior for the bulk: mean \([-0-9.]*\), sd \([0-9.]*\)$/\1 \2/p')"

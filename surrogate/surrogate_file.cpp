@@ -39,6 +39,7 @@ nlohmann::json surrogate_to_json(const ViscositySurrogate& s) {
   for (int d = 0; d < 3; ++d) h["length_scales"][kDimensionNames[d]] = std::exp(hp.log_length_scales(d));
   h["nugget_sd"] = std::exp(0.5 * hp.log_nugget_variance);
   j["hyperparameters"] = h;
+  j["predictive_sd_scale"] = s.predictive_sd_scale();
 
   j["fit"] = {{"log_marginal_likelihood", s.fit_info().log_marginal_likelihood},
               {"starts_tried", s.fit_info().starts_tried},
@@ -106,8 +107,10 @@ ViscositySurrogate surrogate_from_json(const nlohmann::json& j, const std::strin
   if (r.find("fit.starts_tried")) info.starts_tried = static_cast<int>(r.integer("fit.starts_tried", 0));
   if (r.find("fit.starts_converged")) info.starts_converged = static_cast<int>(r.integer("fit.starts_converged", 0));
   const std::string library = r.find("source_library") ? r.text("source_library") : "";
+  // Absent in files written before it existed: 1 (the sd as fitted).
+  const double sd_scale = r.number_or("predictive_sd_scale", 1.0, 1.0, 1e6);
   try {
-    return ViscositySurrogate(std::move(cases), hp, library, info);
+    return ViscositySurrogate(std::move(cases), hp, library, info, sd_scale);
   } catch (const std::exception& e) {
     throw std::invalid_argument(source + ": " + e.what());
   }

@@ -68,17 +68,23 @@ ViscositySurrogate ViscositySurrogate::fit(std::vector<TrainingCase> cases, std:
   const double residual_variance = residual.squaredNorm() / static_cast<double>(residual.size());
   const HyperparameterFitResult result =
       fit_hyperparameters(data, default_hyperparameter_fit_options(ranges, residual_variance));
-  return ViscositySurrogate(std::move(cases), result.hyperparameters, std::move(source_library),
+  ViscositySurrogate fitted(std::move(cases), result.hyperparameters, std::move(source_library),
                             {result.log_marginal_likelihood, result.starts_tried, result.starts_converged});
+  fitted.predictive_sd_scale_ = std::max(1.0, fitted.leave_one_out().rms_standardised_residual);
+  return fitted;
 }
 
 ViscositySurrogate::ViscositySurrogate(std::vector<TrainingCase> cases, GaussianProcessHyperparameters hyperparameters,
-                                       std::string source_library, SurrogateFitInfo fit_info)
+                                       std::string source_library, SurrogateFitInfo fit_info,
+                                       double predictive_sd_scale)
     : cases_(std::move(cases)),
       source_library_(std::move(source_library)),
       fit_info_(fit_info),
+      predictive_sd_scale_(predictive_sd_scale),
       terms_(terms_for(cases_)),
       process_(process_data(cases_, terms_), std::move(hyperparameters)) {
+  if (!(predictive_sd_scale_ >= 1.0 && std::isfinite(predictive_sd_scale_)))
+    throw std::invalid_argument("viscosity surrogate: the predictive sd scale must be finite and at least 1");
   mean_terms_.push_back("phi");
   if (terms_.ca) mean_terms_.push_back("phi ln Ca");
   if (terms_.lambda) mean_terms_.push_back("phi ln lambda");
@@ -129,7 +135,7 @@ ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_num
   const GaussianProcessPrediction p = process_.predict(x, basis(x), basis_jacobian(x));
   ViscosityPrediction out;
   out.eta_re = std::exp(p.mean);
-  out.sd = out.eta_re * std::sqrt(p.variance);  // delta method: sd(exp y) ~ exp(E y) sd(y)
+  out.sd = out.eta_re * predictive_sd_scale_ * std::sqrt(p.variance);  // delta method: sd(exp y) ~ exp(E y) sd(y)
   out.d_phi = out.eta_re * p.mean_gradient(0);
   out.d_ln_ca = out.eta_re * p.mean_gradient(1);
   out.d_ln_lambda = out.eta_re * p.mean_gradient(2);
@@ -151,13 +157,14 @@ JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<Vis
     h_rows.row(i) = basis(x).transpose();
     eta(i) = out.points.back().eta_re;
   }
-  out.covariance = eta.asDiagonal() * process_.latent_covariance(x_rows, h_rows) * eta.asDiagonal();
+  out.covariance = (predictive_sd_scale_ * predictive_sd_scale_) * eta.asDiagonal() *
+                   process_.latent_covariance(x_rows, h_rows) * eta.asDiagonal();
   return out;
 }
 
 double ViscositySurrogate::log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const {
   const Eigen::VectorXd x = input(phi, capillary_number, viscosity_ratio);
-  return std::sqrt(process_.latent_variance(x, basis(x)));
+  return predictive_sd_scale_ * std::sqrt(process_.latent_variance(x, basis(x)));
 }
 
 Eigen::VectorXd ViscositySurrogate::mean_coefficient_sds() const {

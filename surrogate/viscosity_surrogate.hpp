@@ -12,8 +12,13 @@
 // (eta_re_sem / eta_re)^2 per case, plus a fitted nugget and a fixed jitter of 1e-10.
 //
 // Prediction: eta_re = exp(E[y]) (the median of the log-normal predictive, not its mean),
-// sd = eta_re * sd(y) (delta method; sd(y) is the latent sd, without observation noise or
-// nugget), derivatives eta_re * dE[y]/dx (analytic). inside_hull is false outside the
+// sd = eta_re * s * sd(y) (delta method; sd(y) is the latent sd, without observation noise or
+// nugget), derivatives eta_re * dE[y]/dx (analytic). s, the predictive sd scale, is the
+// leave-one-out RMS standardised residual of the fitted process when that exceeds 1, else 1:
+// a process whose held-out errors are s times its stated sd on average. Multiplying the whole
+// covariance (kernel, nugget and noise) by s^2 leaves the mean unchanged and scales every
+// variance by s^2, the held-out ones included, so s is that one overall scale fitted by
+// cross-validation (docs/library.md, "The predictive sd scale"). inside_hull is false outside the
 // bounding box of the library's (phi_actual, Ca, lambda), its phi edges widened by 1 % of
 // the largest phi for the scatter of phi_actual about the planned phi: libraries are grids,
 // so the box is their convex hull (a library with holes or a non-grid design is not
@@ -40,9 +45,11 @@ class ViscositySurrogate final : public ViscosityModel {
   // Fits the hyper-parameters by maximum marginal likelihood (hyperparameter_fit.hpp).
   static ViscositySurrogate fit(std::vector<TrainingCase> cases, std::string source_library = "");
 
-  // Uses the given hyper-parameters as they are (no fit): a loaded surrogate, or tests.
+  // Uses the given hyper-parameters and sd scale as they are (no fit): a loaded surrogate, or
+  // tests. Throws std::invalid_argument unless predictive_sd_scale >= 1 and finite.
   ViscositySurrogate(std::vector<TrainingCase> cases, GaussianProcessHyperparameters hyperparameters,
-                     std::string source_library = "", SurrogateFitInfo fit_info = {});
+                     std::string source_library = "", SurrogateFitInfo fit_info = {},
+                     double predictive_sd_scale = 1.0);
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
   ParameterRange range() const override { return range_; }
@@ -51,11 +58,13 @@ class ViscositySurrogate final : public ViscosityModel {
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
                                          const std::vector<double>& nuisance_values) const override;
 
-  // Latent predictive sd of ln eta_re (= relative sd of eta_re).
+  // Latent predictive sd of ln eta_re (= relative sd of eta_re), the sd scale applied.
   double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;
   bool inside_hull(double phi, double capillary_number, double viscosity_ratio) const;
 
+  // Of the process as fitted (before the sd scale: the report the scale is taken from).
   LeaveOneOutReport leave_one_out() const;
+  double predictive_sd_scale() const { return predictive_sd_scale_; }
 
   // Mean basis: names of the terms used ("phi", "phi ln Ca", "phi ln lambda"), GLS
   // coefficients and their standard deviations.
@@ -84,6 +93,7 @@ class ViscositySurrogate final : public ViscosityModel {
   std::vector<TrainingCase> cases_;
   std::string source_library_;
   SurrogateFitInfo fit_info_;
+  double predictive_sd_scale_ = 1.0;
   Terms terms_;
   std::vector<std::string> mean_terms_;
   ParameterRange range_;

@@ -283,5 +283,33 @@ TEST(CaseProposal, EachChoiceIsTheMaximumAfterAddingTheEarlierOnes) {
   }
 }
 
+// The predictive sd scale: the fitted process's leave-one-out RMS standardised residual when
+// above 1 (else 1), applied to every predictive sd and covariance, kept by the file. Built from
+// cases whose stated noise is a quarter of their real scatter, the scale must exceed 1 and
+// equal that RMS; the mean does not change.
+TEST(ViscositySurrogate, PredictiveSdScaleIsTheLeaveOneOutRmsWhenAboveOne) {
+  std::vector<TrainingCase> cases = synthetic_training_cases(SyntheticGrid{}, 17);
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (auto& c : cases) {
+    c.ln_eta_re += 0.04 * noise(rng);  // scatter 0.04 in ln eta_re ...
+    c.noise_variance = 0.01 * 0.01;    // ... stated as 0.01
+  }
+  const ViscositySurrogate fitted = ViscositySurrogate::fit(cases, "understated");
+  const double rms = fitted.leave_one_out().rms_standardised_residual;
+  ASSERT_GT(rms, 1.0);
+  EXPECT_DOUBLE_EQ(fitted.predictive_sd_scale(), rms);
+  const ViscositySurrogate unscaled(cases, fitted.process().hyperparameters());
+  EXPECT_EQ(unscaled.predictive_sd_scale(), 1.0);
+  const ViscosityPrediction a = fitted.predict(0.2, 0.1, 2.0), b = unscaled.predict(0.2, 0.1, 2.0);
+  EXPECT_EQ(a.eta_re, b.eta_re);
+  EXPECT_NEAR(a.sd, rms * b.sd, 1e-12 * a.sd);
+  EXPECT_NEAR(fitted.predict_joint({{0.2, 0.1, 2.0}}, {}).covariance(0, 0), a.sd * a.sd, 1e-12 * a.sd * a.sd);
+  const auto file = std::filesystem::temp_directory_path() / "rbcal_sd_scale_surrogate.json";
+  save_surrogate(fitted, file);
+  EXPECT_EQ(load_surrogate(file).predictive_sd_scale(), fitted.predictive_sd_scale());
+  EXPECT_THROW(ViscositySurrogate(cases, fitted.process().hyperparameters(), "", {}, 0.9), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace rbcal::surrogate
