@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,6 +53,38 @@ std::optional<std::string> extrapolation_warning(const std::string& method, cons
     << " uN/m) the fitted points reach Ca " << shown(ca) << ", beyond the library's " << shown(range.ca_max)
     << ": there the surrogate extrapolates, and that end of the interval rests on its extrapolation";
   return w.str();
+}
+
+// The smallest Ca of the points at (eta0, G_s): where the upper end of an interval puts them.
+double smallest_capillary_number(const std::vector<RelativeViscosityPoint>& points, double plasma_viscosity,
+                                 double cell_radius, double shear_modulus) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& p : points)
+    smallest = std::min(smallest, capillary_number(plasma_viscosity, p.shear_rate, cell_radius, shear_modulus));
+  return smallest;
+}
+
+// The MCMC's posterior is truncated to the model's range (posterior.hpp): an end of its interval
+// that puts the fitted points within 10 % of the range's Ca edge (at the median eta0; draws differ
+// in eta0) is set by the library's range rather than by the data, and is read as a limit.
+std::vector<std::string> range_cut_warnings(const std::vector<RelativeViscosityPoint>& points, double plasma_viscosity,
+                                            double cell_radius, const Interval& interval,
+                                            const surrogate::ParameterRange& range) {
+  std::vector<std::string> out;
+  const double high = largest_capillary_number(points, plasma_viscosity, cell_radius, interval.lower);
+  const double low = smallest_capillary_number(points, plasma_viscosity, cell_radius, interval.upper);
+  const auto say = [&](const char* end, double g_s, double ca, double edge, const char* which, const char* kind) {
+    std::ostringstream w;
+    w << "MCMC: the " << end << " end of the G_s interval (" << shown(g_s * 1e6) << " uN/m) puts the fitted points at Ca "
+      << shown(ca) << ", at the library's " << which << " Ca " << shown(edge)
+      << ", where the posterior is cut (the model is not used outside its range): that end is set by the library, "
+         "not by the data; read it as a "
+      << kind << " limit";
+    out.push_back(w.str());
+  };
+  if (high >= 0.9 * range.ca_max) say("lower", interval.lower, high, range.ca_max, "largest", "lower");
+  if (low <= range.ca_min / 0.9) say("upper", interval.upper, low, range.ca_min, "smallest", "upper");
+  return out;
 }
 
 // Each method of one sample; a method that throws becomes a warning.
@@ -158,9 +191,10 @@ class SampleCalibration {
         r.warnings.push_back(std::string("MCMC: posterior truncated at the model's Ca range (the start fit is an edge fit): "
                                          "its G_s interval is an ") +
                              limit_kind(r.mcmc->start_fit.model_edge) + " limit, not an estimate");
-      else if (auto w = extrapolation_warning("MCMC", r.mcmc->points, r.mcmc->plasma_viscosity_median,
-                                              o_.setup.cell_radius, r.mcmc->shear_modulus_interval.lower, model_.range()))
-        r.warnings.push_back(*w);
+      else
+        for (std::string& w : range_cut_warnings(r.mcmc->points, r.mcmc->plasma_viscosity_median, o_.setup.cell_radius,
+                                                 r.mcmc->shear_modulus_interval, model_.range()))
+          r.warnings.push_back(std::move(w));
       PredictiveBandOptions bo;
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;

@@ -33,12 +33,10 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   out.start_fit = fit_direct(sample, model, fit_options);
   out.points = out.start_fit.used_points();
 
-  // After an edge fit the likelihood's optimum lies outside the model's Ca range, where the
-  // surrogate only extrapolates: the posterior is then truncated to the range, and its interval
-  // is a limit like the fit's (start_fit.model_edge_reason).
-  PosteriorOptions posterior_options = options.posterior;
-  if (out.start_fit.model_edge != ModelEdge::none) posterior_options.reject_outside_model_range = true;
-  const LogPosterior posterior(model, sample.plasma.eta0, out.points, posterior_options,
+  // The posterior is truncated to the model's range by default (posterior.hpp). After an edge fit
+  // the likelihood's optimum lies outside it, and the interval is a limit like the fit's
+  // (start_fit.model_edge_reason).
+  const LogPosterior posterior(model, sample.plasma.eta0, out.points, options.posterior,
                                sample.plasma.standard_error);
   out.posterior = posterior.options();
   const int d = posterior.dimension();

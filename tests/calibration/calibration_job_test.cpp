@@ -125,3 +125,30 @@ TEST(CalibrationJob, DataTheModelCannotReachBecomeWarningsNotErrors) {
   EXPECT_NE(report.samples[0].warnings.back().find("nothing to calibrate"), std::string::npos);
   EXPECT_EQ(report.samples[0].left_out.size(), input.sample("hardened").points.size());
 }
+
+// The MCMC's posterior is truncated to the model's range: when an end of its interval lies at the
+// range's Ca edge, a warning says that the library, not the data, set it (read as a limit).
+TEST(CalibrationJob, NamesAnIntervalEndThatTheModelsRangeCut) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("mcmc");
+  o.samples = {"intact"};
+  const auto cut_warning = [](const SampleReport& r) {
+    for (const auto& w : r.warnings)
+      if (w.find("MCMC: the lower end of the G_s interval") != std::string::npos &&
+          w.find("read it as a lower limit") != std::string::npos)
+        return true;
+    return false;
+  };
+  std::ostringstream log;
+  const CalibrationReport wide = calibrate_samples(input, synthetic_law(), o, log);
+  ASSERT_TRUE(wide.samples.at(0).mcmc);
+  EXPECT_FALSE(cut_warning(wide.samples[0]));
+  // At the true G_s (0.5 uN/m) the highest shear rate (50 1/s) sits at Ca 0.62: a range ending at Ca 0.66
+  // cuts the interval's lower end (the larger Ca).
+  AnalyticViscosityModel narrow = synthetic_law();
+  narrow.box.ca_max = 0.66;
+  const CalibrationReport cut = calibrate_samples(input, narrow, o, log);
+  ASSERT_TRUE(cut.samples.at(0).mcmc);
+  EXPECT_TRUE(cut_warning(cut.samples[0]));
+  EXPECT_GT(cut.samples[0].mcmc->shear_modulus_interval.lower, wide.samples[0].mcmc->shear_modulus_interval.lower);
+}

@@ -65,15 +65,15 @@ TEST(Posterior, PriorsAreNormalisedAndBounded) {
   EXPECT_DOUBLE_EQ(posterior.lambda(inside), 5.0);
 }
 
-TEST(Posterior, CanBeTruncatedToTheModelsRange) {
+TEST(Posterior, IsTruncatedToTheModelsRangeByDefault) {
   AnalyticViscosityModel model;  // Ca in [0.003, 20]
   const double eta0 = 1.5e-3;
   const auto data = point(0.2, 100.0, 1.8, 0.05);
   // Ca = eta0 * 100 * 4e-6 / G_s: G_s = 1e-6 gives Ca 0.6 (inside), G_s = 1e-8 gives Ca 60 (outside).
   PosteriorOptions options;
-  const LogPosterior trusting(model, eta0, {data}, options);
-  options.reject_outside_model_range = true;
   const LogPosterior truncated(model, eta0, {data}, options);
+  options.reject_outside_model_range = false;
+  const LogPosterior trusting(model, eta0, {data}, options);
   const Eigen::VectorXd inside = Eigen::VectorXd::Constant(1, std::log(1e-6));
   const Eigen::VectorXd outside = Eigen::VectorXd::Constant(1, std::log(1.2e-8));
   EXPECT_DOUBLE_EQ(truncated(inside), trusting(inside));
