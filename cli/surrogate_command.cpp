@@ -55,8 +55,9 @@ void print_model(const surrogate::ViscositySurrogate& s) {
   std::printf("  nugget sd           %.3g (ln eta_re, on top of each case's SEM)\n", std::exp(0.5 * hp.log_nugget_variance));
   std::printf("  log marginal lik.   %.6g (%d of %d starts converged)\n", s.fit_info().log_marginal_likelihood,
               s.fit_info().starts_converged, s.fit_info().starts_tried);
-  std::printf("  predictive sd scale %.4g (the leave-one-out RMS standardised residual below, if above 1)\n",
-              s.predictive_sd_scale());
+  std::printf("  predictive sd scale %.4g (held-out RMS %.3g: leave-one-out residuals against each run's own scatter, "
+              "if above 1)\n",
+              s.predictive_sd_scale(), s.held_out_rms());
   std::string mean = "  mean ln eta_re      ";
   const Eigen::VectorXd b = s.mean_coefficients(), sd = s.mean_coefficient_sds();
   for (std::size_t k = 0; k < s.mean_terms().size(); ++k) {

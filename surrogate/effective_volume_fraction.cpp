@@ -51,7 +51,8 @@ MappedLibrary map_to_effective_volume_fraction(const std::vector<SimulationLibra
         continue;
       }
       const double from_offset = c.eta_re * std::abs(std::log(c.eta_re)) * m.volume_ratio_sd / m.volume_ratio;
-      m.eta_re_sd = std::hypot(error_with_scatter_floor(c, options.scatter), from_offset);
+      m.run_sd = error_with_scatter_floor(c, options.scatter);
+      m.eta_re_sd = std::hypot(m.run_sd, from_offset);
       out.cases.push_back(m);
     }
   return out;
@@ -70,6 +71,7 @@ nlohmann::json mapped_case_json(const MappedCase& c, const EffectiveVolumeFracti
       {"offset_sd", options.offset_sd},
       {"volume_ratio", c.volume_ratio},
       {"volume_ratio_sd", c.volume_ratio_sd},
+      {"run_sd", c.run_sd},
       {"phi_raw", c.raw.phi},
       {"phi_actual_raw", c.raw.phi_actual},
       {"scatter_floor", options.scatter.scatter_floor},

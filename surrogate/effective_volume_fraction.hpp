@@ -52,6 +52,7 @@ struct MappedCase {
   double phi = 0.0;              // g params.phi
   double phi_actual = 0.0;       // g result.phi_actual: the surrogate's input, compared with phi_max
   double eta_re_sd = 0.0;        // standard error, scatter floor and the offset's uncertainty
+  double run_sd = 0.0;           // the run's own error: standard error and scatter floor only
 };
 
 struct MappedLibrary {

@@ -38,6 +38,7 @@ LibraryCase library_case_from_json(const nlohmann::json& j, const std::filesyste
     }
     if (c.extrapolation_method == formats::kEffectiveVolumeFraction)
       c.phi_as_run = r.in_range("extrapolation.phi_raw", 0.0, 1.0);
+    if (r.find("extrapolation.run_sd")) c.run_sd = r.non_negative("extrapolation.run_sd");
   }
   r.numbers("numerics.box", 3);
   r.positive("numerics.tau_out");

@@ -39,8 +39,11 @@ struct LibraryCase {
   // ("richardson" or "correction model") and the raw results it came from; empty otherwise.
   std::string extrapolation_method;
   std::vector<ResolutionResult> raw_results;
-  // Cases moved to their effective volume fraction: the phi they were run at (0 otherwise).
+  // Cases moved to their effective volume fraction: the phi they were run at (0 otherwise), and
+  // the run's own error (standard error and seed scatter, without the offset's share that
+  // eta_re_sem carries there; 0: not given, eta_re_sem is the run's own).
   double phi_as_run = 0.0;
+  double run_sd = 0.0;
   // The numerics every case of one library must share (formats::numerics_signature).
   nlohmann::json numerics_signature;
 };

@@ -6,8 +6,14 @@ namespace rbcal::surrogate {
 
 TrainingCase training_case(const LibraryCase& c) {
   const double relative_sem = c.eta_re_sem / c.eta_re;
-  return {c.id, c.phi_actual, std::log(c.capillary_number), std::log(c.viscosity_ratio), std::log(c.eta_re),
-          relative_sem * relative_sem};
+  const double relative_run = c.run_sd / c.eta_re;
+  return {c.id,
+          c.phi_actual,
+          std::log(c.capillary_number),
+          std::log(c.viscosity_ratio),
+          std::log(c.eta_re),
+          relative_sem * relative_sem,
+          c.run_sd > 0.0 ? relative_run * relative_run : -1.0};
 }
 
 std::vector<TrainingCase> training_cases(const SimulationLibrary& library) {

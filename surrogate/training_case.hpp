@@ -16,6 +16,9 @@ struct TrainingCase {
   double ln_lambda = 0.0;       // ln lambda
   double ln_eta_re = 0.0;       // y
   double noise_variance = 0.0;  // var(y) = (eta_re_sem / eta_re)^2
+  // The run's own share of it (without an offset's share; library_case.hpp run_sd): what a new
+  // run at the same point scatters by. Negative: the whole noise_variance.
+  double run_noise_variance = -1.0;
 };
 
 TrainingCase training_case(const LibraryCase& c);

@@ -70,7 +70,7 @@ ViscositySurrogate ViscositySurrogate::fit(std::vector<TrainingCase> cases, std:
       fit_hyperparameters(data, default_hyperparameter_fit_options(ranges, residual_variance));
   ViscositySurrogate fitted(std::move(cases), result.hyperparameters, std::move(source_library),
                             {result.log_marginal_likelihood, result.starts_tried, result.starts_converged});
-  fitted.predictive_sd_scale_ = std::max(1.0, fitted.leave_one_out().rms_standardised_residual);
+  fitted.predictive_sd_scale_ = std::max(1.0, fitted.held_out_rms());
   return fitted;
 }
 
@@ -169,6 +169,20 @@ double ViscositySurrogate::log_viscosity_sd(double phi, double capillary_number,
 
 Eigen::VectorXd ViscositySurrogate::mean_coefficient_sds() const {
   return process_.mean_coefficient_covariance().diagonal().cwiseSqrt();
+}
+
+double ViscositySurrogate::held_out_rms() const {
+  const LeaveOneOutPredictions loo = process_.leave_one_out();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < cases_.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    const TrainingCase& c = cases_[i];
+    const double run = c.run_noise_variance >= 0.0 ? c.run_noise_variance : c.noise_variance;
+    const double variance = loo.variance(k) - c.noise_variance + run;  // the case's noise swapped for its run's
+    const double r = c.ln_eta_re - loo.mean(k);
+    sum += r * r / variance;
+  }
+  return std::sqrt(sum / static_cast<double>(cases_.size()));
 }
 
 LeaveOneOutReport ViscositySurrogate::leave_one_out() const {

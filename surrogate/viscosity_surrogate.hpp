@@ -13,12 +13,12 @@
 //
 // Prediction: eta_re = exp(E[y]) (the median of the log-normal predictive, not its mean),
 // sd = eta_re * s * sd(y) (delta method; sd(y) is the latent sd, without observation noise or
-// nugget), derivatives eta_re * dE[y]/dx (analytic). s, the predictive sd scale, is the
-// leave-one-out RMS standardised residual of the fitted process when that exceeds 1, else 1:
-// a process whose held-out errors are s times its stated sd on average. Multiplying the whole
-// covariance (kernel, nugget and noise) by s^2 leaves the mean unchanged and scales every
-// variance by s^2, the held-out ones included, so s is that one overall scale fitted by
-// cross-validation (docs/library.md, "The predictive sd scale"). inside_hull is false outside the
+// nugget), derivatives eta_re * dE[y]/dx (analytic). s, the predictive sd scale, is the RMS
+// of the held-out residuals (held_out_rms) when that exceeds 1, else 1: a process whose held-out
+// errors are s times its stated sd on average. Multiplying the whole covariance (kernel,
+// nugget and noise) by s^2 leaves the mean unchanged and scales every variance by s^2, so s is
+// that one overall scale fitted by cross-validation (docs/library.md, "The runs' offset sd,
+// and a predictive sd scale"). inside_hull is false outside the
 // bounding box of the library's (phi_actual, Ca, lambda), its phi edges widened by 1 % of
 // the largest phi for the scatter of phi_actual about the planned phi: libraries are grids,
 // so the box is their convex hull (a library with holes or a non-grid design is not
@@ -62,8 +62,14 @@ class ViscositySurrogate final : public ViscosityModel {
   double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;
   bool inside_hull(double phi, double capillary_number, double viscosity_ratio) const;
 
-  // Of the process as fitted (before the sd scale: the report the scale is taken from).
+  // Of the process as fitted (before the sd scale).
   LeaveOneOutReport leave_one_out() const;
+  // The RMS of the leave-one-out residuals, each divided by what a new run at that point would
+  // scatter by about the prediction: the held-out latent variance, the nugget and the run's own
+  // noise (run_noise_variance; a case's noise_variance may also carry a systematic share, such
+  // as the offset's, that a new run does not add). Equals the leave-one-out RMS standardised
+  // residual when every case's run noise is its noise.
+  double held_out_rms() const;
   double predictive_sd_scale() const { return predictive_sd_scale_; }
 
   // Mean basis: names of the terms used ("phi", "phi ln Ca", "phi ln lambda"), GLS

@@ -127,6 +127,7 @@ TEST(EffectiveVolumeFraction, TheOffsetsUncertaintyWidensEachCase) {
     EXPECT_NEAR(c.volume_ratio_sd, s_g, 1e-12);
     const double expected = std::hypot(c.raw.eta_re_sem, c.raw.eta_re * std::log(c.raw.eta_re) * s_g / g(8));
     EXPECT_NEAR(c.eta_re_sd, expected, 1e-12 * expected);
+    EXPECT_EQ(c.run_sd, c.raw.eta_re_sem);  // the run's own error keeps no share of the offset
   }
 }
 
@@ -152,6 +153,10 @@ TEST(EffectiveVolumeFraction, WrittenCasesFormOneLibraryAcrossResolutions) {
     ASSERT_EQ(c.raw_results.size(), 1u);
     EXPECT_NEAR(c.phi, g(c.raw_results[0].nodes_per_radius) * c.phi_as_run, 1e-9);
     EXPECT_EQ(c.eta_re, c.raw_results[0].eta_re);
+    // The run's own error travels with the case, apart from the offset's share.
+    EXPECT_EQ(c.run_sd, c.raw_results[0].eta_re_sem);
+    EXPECT_GT(c.eta_re_sem, c.run_sd);
+    EXPECT_NEAR(training_case(c).run_noise_variance, std::pow(c.run_sd / c.eta_re, 2), 1e-15);
   }
   EXPECT_NE(format_summary(summarise(mapped)).find("(run at phi"), std::string::npos);
 }

@@ -283,8 +283,8 @@ TEST(CaseProposal, EachChoiceIsTheMaximumAfterAddingTheEarlierOnes) {
   }
 }
 
-// The predictive sd scale: the fitted process's leave-one-out RMS standardised residual when
-// above 1 (else 1), applied to every predictive sd and covariance, kept by the file. Built from
+// The predictive sd scale: the fitted process's held-out RMS when above 1 (else 1), applied to
+// every predictive sd and covariance, kept by the file. Built from
 // cases whose stated noise is a quarter of their real scatter, the scale must exceed 1 and
 // equal that RMS; the mean does not change.
 TEST(ViscositySurrogate, PredictiveSdScaleIsTheLeaveOneOutRmsWhenAboveOne) {
@@ -309,6 +309,17 @@ TEST(ViscositySurrogate, PredictiveSdScaleIsTheLeaveOneOutRmsWhenAboveOne) {
   save_surrogate(fitted, file);
   EXPECT_EQ(load_surrogate(file).predictive_sd_scale(), fitted.predictive_sd_scale());
   EXPECT_THROW(ViscositySurrogate(cases, fitted.process().hyperparameters(), "", {}, 0.9), std::invalid_argument);
+
+  // A noise that carries a systematic share (as the runs' offset sd does) hides the scatter from
+  // leave-one-out; the held-out RMS against each run's own noise finds it.
+  for (auto& c : cases) {
+    c.noise_variance = 0.08 * 0.08;      // stated: the run's 0.01 and a systematic 0.08 ...
+    c.run_noise_variance = 0.01 * 0.01;  // ... of which a new run adds only its own
+  }
+  const ViscositySurrogate hidden = ViscositySurrogate::fit(cases, "systematic share");
+  EXPECT_LT(hidden.leave_one_out().rms_standardised_residual, 1.0);
+  ASSERT_GT(hidden.held_out_rms(), 1.0);
+  EXPECT_DOUBLE_EQ(hidden.predictive_sd_scale(), hidden.held_out_rms());
 }
 
 }  // namespace
