@@ -1,12 +1,13 @@
 #include "calibration/calibration_job.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "calibration/alpha_method.hpp"
 #include "calibration/direct_fit.hpp"
@@ -32,13 +33,16 @@ std::optional<std::pair<std::string, std::string>> compared_samples(const std::s
   return std::make_pair(compare.substr(0, slash), compare.substr(slash + 1));
 }
 
-// The largest Ca of the points at (eta0, G_s): where the lower end of an interval puts them.
-double largest_capillary_number(const std::vector<RelativeViscosityPoint>& points, double plasma_viscosity,
-                                double cell_radius, double shear_modulus) {
-  double largest = 0.0;
-  for (const auto& p : points)
-    largest = std::max(largest, capillary_number(plasma_viscosity, p.shear_rate, cell_radius, shear_modulus));
-  return largest;
+// The smallest and largest Ca of the points at (eta0, G_s): where the upper and the lower end of
+// an interval put them.
+std::pair<double, double> capillary_number_span(const std::vector<RelativeViscosityPoint>& points,
+                                                double plasma_viscosity, double cell_radius, double shear_modulus) {
+  std::pair<double, double> span{std::numeric_limits<double>::infinity(), 0.0};
+  for (const auto& p : points) {
+    const double ca = capillary_number(plasma_viscosity, p.shear_rate, cell_radius, shear_modulus);
+    span = {std::min(span.first, ca), std::max(span.second, ca)};
+  }
+  return span;
 }
 
 // A warning when the lower end of a G_s interval carries fitted points beyond the model's Ca range:
@@ -46,22 +50,13 @@ double largest_capillary_number(const std::vector<RelativeViscosityPoint>& point
 std::optional<std::string> extrapolation_warning(const std::string& method, const std::vector<RelativeViscosityPoint>& points,
                                                  double plasma_viscosity, double cell_radius, double lower_shear_modulus,
                                                  const surrogate::ParameterRange& range) {
-  const double ca = largest_capillary_number(points, plasma_viscosity, cell_radius, lower_shear_modulus);
+  const double ca = capillary_number_span(points, plasma_viscosity, cell_radius, lower_shear_modulus).second;
   if (!(ca > range.ca_max * (1.0 + 1e-9))) return std::nullopt;
   std::ostringstream w;
   w << method << ": at the lower end of the G_s interval (" << shown(lower_shear_modulus * 1e6)
     << " uN/m) the fitted points reach Ca " << shown(ca) << ", beyond the library's " << shown(range.ca_max)
     << ": there the surrogate extrapolates, and that end of the interval rests on its extrapolation";
   return w.str();
-}
-
-// The smallest Ca of the points at (eta0, G_s): where the upper end of an interval puts them.
-double smallest_capillary_number(const std::vector<RelativeViscosityPoint>& points, double plasma_viscosity,
-                                 double cell_radius, double shear_modulus) {
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const auto& p : points)
-    smallest = std::min(smallest, capillary_number(plasma_viscosity, p.shear_rate, cell_radius, shear_modulus));
-  return smallest;
 }
 
 // The MCMC's posterior is truncated to the model's range (posterior.hpp): an end of its interval
@@ -71,8 +66,8 @@ std::vector<std::string> range_cut_warnings(const std::vector<RelativeViscosityP
                                             double cell_radius, const Interval& interval,
                                             const surrogate::ParameterRange& range) {
   std::vector<std::string> out;
-  const double high = largest_capillary_number(points, plasma_viscosity, cell_radius, interval.lower);
-  const double low = smallest_capillary_number(points, plasma_viscosity, cell_radius, interval.upper);
+  const double high = capillary_number_span(points, plasma_viscosity, cell_radius, interval.lower).second;
+  const double low = capillary_number_span(points, plasma_viscosity, cell_radius, interval.upper).first;
   const auto say = [&](const char* end, double g_s, double ca, double edge, const char* which, const char* kind) {
     std::ostringstream w;
     w << "MCMC: the " << end << " end of the G_s interval (" << shown(g_s * 1e6) << " uN/m) puts the fitted points at Ca "

@@ -263,6 +263,9 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   bool edge_fit = false;
   double lo = ln_gs_lo, hi = ln_gs_hi;           // the bounds of the last solve
   std::pair<double, double> edge{ln_gs_lo, ln_gs_hi};
+  // The parameter blocks as every residual block takes them.
+  const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
+                                       &x.nuisance[1]};
   for (int round = 0; round < std::max(1, options.max_selection_rounds); ++round) {
     const int n_used = static_cast<int>(std::count(used.begin(), used.end(), true));
     if (n_used < fitted_to_data) {
@@ -294,8 +297,6 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     }
     ceres::Problem problem;
     std::vector<ceres::ResidualBlockId> normalisation_blocks;
-    const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
-                                         &x.nuisance[1]};
     if (options.loss == RobustLoss::none) {
       JointResidualBlock joint{obs, used_subset(sample.points, used), fit_eta0, n_nuisances};
       problem.AddResidualBlock(joint_cost(joint), nullptr, blocks);
@@ -438,8 +439,6 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     result.points.push_back(f);
   }
   if (options.loss == RobustLoss::none) {  // chi^2 of the joint likelihood: the whitened residuals
-    const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
-                                         &x.nuisance[1]};
     const WhitenedResiduals w =
         JointResidualBlock{obs, used_subset(sample.points, used), fit_eta0, n_nuisances}.at(blocks.data());
     if (w.ok) result.chi_square = w.whitened.squaredNorm();

@@ -23,7 +23,6 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
     out.residual(i) = measured.eta_re - predicted;
     out.covariance(i, i) += measured.sd * measured.sd + std::pow(relative_discrepancy * predicted, 2);
   }
-  out.predictions = std::move(model.points);
   return out;
 }
 

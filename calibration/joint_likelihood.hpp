@@ -16,9 +16,8 @@
 namespace rbcal::calibration {
 
 struct JointResiduals {
-  std::vector<surrogate::ViscosityPrediction> predictions;  // one per point
-  Eigen::VectorXd residual;                                 // measured eta_re - predicted
-  Eigen::MatrixXd covariance;                               // Sigma
+  Eigen::VectorXd residual;    // measured eta_re - predicted
+  Eigen::MatrixXd covariance;  // Sigma
 };
 
 // at: eta0 and the model's nuisance values; relative_discrepancy: sigma_d (0 without it).

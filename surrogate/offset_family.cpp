@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -115,24 +116,35 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
                                 std::to_string(values.size()));
   JointViscosityPrediction out;
   const auto n = static_cast<Eigen::Index>(queries.size());
-  Eigen::VectorXd sd(n), box_gradient(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
-    const Boxed b = boxed(predict_at_offset(q.phi, q.capillary_number, q.viscosity_ratio, offset));
-    out.points.push_back(b.prediction);
-    sd(i) = b.sd_without_box;
-    box_gradient(i) = b.box_gradient;
-  }
   // The bracketing members' correlations, weighted linearly in c.
   const double h = members_[1].offset - members_[0].offset;
   const double s = std::clamp((offset - members_.front().offset) / h, 0.0, static_cast<double>(members_.size() - 1));
   const auto lower = std::min(static_cast<std::size_t>(std::floor(s)), members_.size() - 2);
   const double t = s - static_cast<double>(lower);
+  const auto correlation_weight = [&](std::size_t k) { return k == lower ? 1.0 - t : k == lower + 1 ? t : 0.0; };
+  // Each member is asked once: jointly where its correlation is needed, point by point elsewhere.
+  const std::vector<double> w = weights(offset);
+  std::vector<JointViscosityPrediction> member(members_.size());
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    if (correlation_weight(k) != 0.0) {
+      member[k] = members_[k].model->predict_joint(queries, {});
+    } else if (w[k] != 0.0) {
+      for (const ViscosityQuery& q : queries)
+        member[k].points.push_back(members_[k].model->predict(q.phi, q.capillary_number, q.viscosity_ratio));
+    }
+  }
+  Eigen::VectorXd sd(n), box_gradient(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Boxed b = boxed(combined(w, [&](std::size_t k) { return member[k].points[static_cast<std::size_t>(i)]; }));
+    out.points.push_back(b.prediction);
+    sd(i) = b.sd_without_box;
+    box_gradient(i) = b.box_gradient;
+  }
   Eigen::MatrixXd correlation = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t k : {lower, lower + 1}) {
-    const double weight = k == lower ? 1.0 - t : t;
+    const double weight = correlation_weight(k);
     if (weight == 0.0) continue;
-    const Eigen::MatrixXd c = members_[k].model->predict_joint(queries, {}).covariance;
+    const Eigen::MatrixXd& c = member[k].covariance;
     for (Eigen::Index i = 0; i < n; ++i)
       for (Eigen::Index j = 0; j < n; ++j) {
         const double scale = std::sqrt(std::max(c(i, i), 0.0) * std::max(c(j, j), 0.0));
@@ -158,12 +170,18 @@ ViscosityPrediction with_box_correction(const ViscosityPrediction& p, double bet
 
 ViscosityPrediction OffsetFamilyModel::predict_at_offset(double phi, double capillary_number, double viscosity_ratio,
                                                          double offset) const {
-  const std::vector<double> w = weights(offset);
+  return combined(weights(offset), [&](std::size_t k) {
+    return members_[k].model->predict(phi, capillary_number, viscosity_ratio);
+  });
+}
+
+ViscosityPrediction OffsetFamilyModel::combined(const std::vector<double>& w,
+                                                const std::function<ViscosityPrediction(std::size_t)>& member) const {
   ViscosityPrediction out;
   out.eta_re = out.sd = 0.0;
   for (std::size_t k = 0; k < members_.size(); ++k) {
     if (w[k] == 0.0) continue;
-    const ViscosityPrediction p = members_[k].model->predict(phi, capillary_number, viscosity_ratio);
+    const ViscosityPrediction p = member(k);
     out.eta_re += w[k] * p.eta_re;
     out.sd += w[k] * p.sd;
     out.d_phi += w[k] * p.d_phi;

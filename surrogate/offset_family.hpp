@@ -27,6 +27,7 @@
 // inside and one-sided ones at the ends: continuous with a continuous first derivative in c,
 // exact at the members and for predictions linear in c. Beyond the ends the end cubic goes on
 // (only a derivative step leaves [c_0, c_n]: the prior is truncated there).
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -84,6 +85,9 @@ class OffsetFamilyModel final : public ViscosityModel {
     double box_gradient = 0.0;
   };
   Boxed boxed(const ViscosityPrediction& p) const;
+  // The members' predictions weighted by w (weights()); member(k) is asked only where w[k] != 0.
+  ViscosityPrediction combined(const std::vector<double>& w,
+                               const std::function<ViscosityPrediction(std::size_t)>& member) const;
 
   std::vector<OffsetFamilyMember> members_;
   ModelNuisance offset_;
