@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include "calibration/quantiles.hpp"
 
@@ -13,11 +14,21 @@ namespace rbcal::calibration {
 
 namespace {
 
+// A NaN has no rank: sorting it is undefined, and grouping ties around it never ends.
+void check_finite(const ChainSet& chains) {
+  for (std::size_t j = 0; j < chains.size(); ++j)
+    for (std::size_t i = 0; i < chains[j].size(); ++i)
+      if (!std::isfinite(chains[j][i]))
+        throw std::invalid_argument("chain diagnostics: draw " + std::to_string(i) + " of chain " + std::to_string(j) +
+                                    " is not finite (" + std::to_string(chains[j][i]) + ")");
+}
+
 void check(const ChainSet& chains) {
   if (chains.empty() || chains.front().size() < 4)
     throw std::invalid_argument("chain diagnostics need at least one chain of at least 4 draws");
   for (const auto& c : chains)
     if (c.size() != chains.front().size()) throw std::invalid_argument("chain diagnostics need chains of equal length");
+  check_finite(chains);
 }
 
 double mean_of(const std::vector<double>& x) { return std::accumulate(x.begin(), x.end(), 0.0) / x.size(); }
@@ -122,6 +133,9 @@ ChainSet split_chains(const ChainSet& chains) {
 }
 
 ChainSet rank_normalize(const ChainSet& chains) {
+  check_finite(chains);
+  for (const auto& c : chains)
+    if (c.size() != chains.front().size()) throw std::invalid_argument("chain diagnostics need chains of equal length");
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t j = 0; j < chains.size(); ++j)
     for (std::size_t i = 0; i < chains[j].size(); ++i) order.push_back({chains[j][i], j * chains[0].size() + i});

@@ -110,6 +110,13 @@ TriangleMesh make_biconcave_cell(int triangles, double radius, BiconcaveProfile 
   return mesh;
 }
 
+TriangleMesh make_spheroid(int triangles, double radius, double aspect_ratio) {
+  if (!(aspect_ratio > 0.0)) throw std::invalid_argument("spheroid: aspect ratio must be positive");
+  TriangleMesh mesh = make_icosphere(subdivisions_for(triangles));
+  for (Vec3& v : mesh.vertices) v = Vec3(radius * v.x(), radius * v.y(), radius * aspect_ratio * v.z());
+  return mesh;
+}
+
 MeshQuality mesh_quality(const TriangleMesh& mesh) {
   MeshQuality q;
   q.min_edge = std::numeric_limits<double>::max();

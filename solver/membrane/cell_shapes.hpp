@@ -30,6 +30,11 @@ int subdivisions_for(int triangles);
 
 TriangleMesh make_sphere(int triangles, double radius);
 TriangleMesh make_biconcave_cell(int triangles, double radius, BiconcaveProfile profile);
+// Oblate (aspect_ratio < 1) or prolate spheroid about z: equatorial semi-axis radius, polar
+// semi-axis aspect_ratio * radius. A stiff one is the rigid body of known intrinsic
+// viscosity (solver/membrane/rigid_spheroid_viscosity.hpp) that measures the immersed boundary's
+// thickening of a thin cell.
+TriangleMesh make_spheroid(int triangles, double radius, double aspect_ratio);
 
 // Maximum thickness of the profile in units of the radius a.
 double biconcave_max_thickness(BiconcaveProfile profile);

@@ -12,11 +12,22 @@
 namespace rbcal::solver {
 
 TriangleMesh reference_cell(const SimulationCase& c, double radius) {
-  return c.shape == CellShape::Sphere ? make_sphere(c.triangles, radius)
-                                      : make_biconcave_cell(c.triangles, radius, c.profile);
+  switch (c.shape) {
+    case CellShape::Sphere: return make_sphere(c.triangles, radius);
+    case CellShape::Spheroid: return make_spheroid(c.triangles, radius, c.aspect_ratio);
+    case CellShape::Biconcave: break;
+  }
+  return make_biconcave_cell(c.triangles, radius, c.profile);
 }
 
-std::string to_string(CellShape s) { return s == CellShape::Sphere ? "sphere" : "biconcave"; }
+std::string to_string(CellShape s) {
+  switch (s) {
+    case CellShape::Sphere: return "sphere";
+    case CellShape::Spheroid: return "spheroid";
+    case CellShape::Biconcave: break;
+  }
+  return "biconcave";
+}
 std::string to_string(Integrator i) { return i == Integrator::Euler ? "euler" : "rk4"; }
 std::string to_string(NodeVelocity v) { return v == NodeVelocity::IntervalMean ? "interval_mean" : "last_step"; }
 
@@ -30,6 +41,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   every_field.cells.push_back({});
   every_field.skalak_c_per_ca = 1.0;
   every_field.coupling_interval = 2;  // so that node_velocity is written
+  every_field.shape = CellShape::Spheroid;  // so that aspect_ratio is written
   const nlohmann::json known = case_to_json(every_field);
   for (const char* section : {"params", "cells", "numerics", "run"}) {
     std::vector<std::string> keys;
@@ -45,8 +57,9 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
 
   try {
     const std::string shape = r.text_or("cells.shape", "biconcave");
-    if (shape != "sphere" && shape != "biconcave") r.fail("cells.shape", "must be \"sphere\" or \"biconcave\"");
-    c.shape = shape == "sphere" ? CellShape::Sphere : CellShape::Biconcave;
+    if (shape != "sphere" && shape != "biconcave" && shape != "spheroid")
+      r.fail("cells.shape", "must be \"sphere\", \"biconcave\" or \"spheroid\"");
+    c.shape = shape == "sphere" ? CellShape::Sphere : shape == "spheroid" ? CellShape::Spheroid : CellShape::Biconcave;
     c.profile = biconcave_profile_from_string(r.text_or("cells.profile", "evans-fung"));
     c.law = membrane_law_from_string(r.text_or("cells.law", "skalak"));
     c.kernel = kernel_from_string(r.text_or("numerics.kernel", "peskin4"));
@@ -61,6 +74,10 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   } catch (const std::invalid_argument& e) {
     r.fail("cells.triangles", e.what());
   }
+  if (c.shape == CellShape::Spheroid)
+    c.aspect_ratio = r.number_or("cells.aspect_ratio", c.aspect_ratio, 0.05, 20.0);
+  else if (r.find("cells.aspect_ratio"))
+    r.fail("cells.aspect_ratio", "only a spheroid has an aspect ratio");
   c.skalak_c = r.number_or("cells.skalak_c", c.skalak_c, 0.0, 1e6);
   c.skalak_c_per_ca = r.number_or("cells.skalak_c_per_Ca", c.skalak_c_per_ca, 0.0, 1e6);
   if (const nlohmann::json* list = r.find("cells.placements")) {
@@ -128,6 +145,7 @@ nlohmann::json case_to_json(const SimulationCase& c) {
                 {"triangles", c.triangles},
                 {"law", to_string(c.law)},
                 {"skalak_c", c.skalak_c}};
+  if (c.shape == CellShape::Spheroid) j["cells"]["aspect_ratio"] = c.aspect_ratio;
   if (c.skalak_c_per_ca > 0.0) j["cells"]["skalak_c_per_Ca"] = c.skalak_c_per_ca;
   for (const CellPlacement& p : c.cells) j["cells"]["placements"].push_back({{"center", p.center}, {"rotation", p.rotation}});
   j["numerics"] = {{"N_a", c.resolution.nodes_per_radius},

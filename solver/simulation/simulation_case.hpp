@@ -16,7 +16,7 @@
 
 namespace rbcal::solver {
 
-enum class CellShape { Sphere, Biconcave };
+enum class CellShape { Sphere, Biconcave, Spheroid };
 enum class Integrator { Euler, RK4 };
 // The fluid velocity that moves the membrane over a coupling interval of k fluid steps:
 // the mean of the velocities interpolated after each of the k steps, or (the scheme
@@ -36,6 +36,7 @@ struct SimulationCase {
   // cells
   CellShape shape = CellShape::Biconcave;
   BiconcaveProfile profile = BiconcaveProfile::EvansFung;
+  double aspect_ratio = 1.0;  // polar over equatorial semi-axis, spheroids only
   int triangles = 1280;
   MembraneLaw law = MembraneLaw::Skalak;
   double skalak_c = 100.0;

@@ -77,3 +77,20 @@ TEST(ChainDiagnostics, RankNormalisationGivesNormalScores) {
   EXPECT_NEAR(z[0][0], -z[1][3], 1e-12);  // symmetric scores
   EXPECT_THROW(split_rhat({{1.0, 2.0}}), std::invalid_argument);
 }
+
+TEST(ChainDiagnostics, NonFiniteDrawsAreRefusedNotLoopedOn) {
+  // A NaN compares unequal to itself, so the tie grouping of the ranks never advanced past it
+  // and the diagnostics hung (and sorting NaN keys is undefined behaviour).
+  ChainSet chains = ar1_chains(4, 100, 0.5, 11);
+  chains[2][37] = std::nan("");
+  try {
+    rank_normalized_split_rhat(chains);
+    FAIL() << "a NaN draw was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("draw 37 of chain 2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(rank_normalize(chains), std::invalid_argument);
+  EXPECT_THROW(bulk_effective_sample_size(chains), std::invalid_argument);
+  chains[2][37] = INFINITY;
+  EXPECT_THROW(split_rhat(chains), std::invalid_argument);
+}
