@@ -82,6 +82,7 @@ std::string SampleReport::brief_report() const {
     out += "  sampler     " + mc.sampler + "\n";
   }
   for (const auto& w : warnings) out += "  warning: " + w + "\n";
+  for (const auto& line : consistency.lines()) out += "  consistency: " + line + "\n";
   return out;
 }
 

@@ -128,6 +128,7 @@ class SampleCalibration {
     if (o_.runs("direct")) direct(r);
     if (o_.runs("mcmc")) mcmc(r);
     points_left_out(r);
+    r.consistency = check_consistency(r, model_.range());
     return r;
   }
 

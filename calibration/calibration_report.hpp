@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calibration/alpha_method.hpp"
+#include "calibration/consistency_check.hpp"
 #include "calibration/calibration_input.hpp"
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
@@ -42,6 +43,8 @@ struct SampleReport {
   std::vector<PredictiveBand> bands;  // posterior-predictive eta(gamma_dot) per phi (with mcmc)
   double band_level = 0.95;           // the bands' probability content (PredictiveBandOptions::level)
   std::vector<std::string> warnings;  // method failures, points outside the model, chains not converged
+  // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).
+  ConsistencyCheck consistency;
 
   // The point-wise fit used for fits.csv: the direct fit, else the MCMC's start fit, else none.
   const DirectFitResult* point_fit() const;

@@ -213,6 +213,7 @@ nlohmann::json sample_summary(const SampleReport& s) {
   if (s.mcmc) methods["mcmc"] = mcmc_json(*s.mcmc);
   j["methods"] = methods;
   j["warnings"] = s.warnings;
+  j["consistency"] = s.consistency.to_json();
   return j;
 }
 
