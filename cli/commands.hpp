@@ -4,6 +4,12 @@
 
 namespace rbcal::cli {
 
+// Thrown by a command that has said what it had to and must end with this exit status
+// (e.g. 130 after SIGINT, as shells expect); main returns it.
+struct ExitStatus {
+  int code = 1;
+};
+
 void add_couette_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_stretch_command(CLI::App& app);

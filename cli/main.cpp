@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const rbcal::cli::ExitStatus& e) {
+    return e.code;
   } catch (const std::exception& e) {
     std::cerr << "rbcal: error: " << e.what() << "\n";
     return 2;

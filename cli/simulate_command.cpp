@@ -15,6 +15,7 @@ struct SimulateOptions {
   std::string output_dir;
   bool quiet = false;
   bool resume = false;
+  bool overwrite = false;
   long long max_steps = 0;
   int coupling_interval = 0;
 };
@@ -27,13 +28,18 @@ void run_simulate(const SimulateOptions& o) {
   ro.output_dir = out;
   ro.progress = o.quiet ? nullptr : &std::cerr;
   ro.resume = o.resume;
+  ro.overwrite = o.overwrite;
   ro.max_steps = o.max_steps;
   ro.coupling_interval = o.coupling_interval;
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
   if (!j.contains("result")) {
-    std::cout << "rbcal simulate: stopped at strain " << j["strain"].get<double>() << " (--max-steps or a signal); "
-              << "checkpoint " << j["checkpoint"].get<std::string>() << " (continue with --resume)\n";
+    const int signal_number = j.value("signal", 0);
+    std::cout << "rbcal simulate: stopped at strain " << j["strain"].get<double>()
+              << (signal_number ? " by signal " + std::to_string(signal_number) : std::string(" (--max-steps)"))
+              << "; checkpoint " << j["checkpoint"].get<std::string>() << " (continue with --resume)\n";
+    // A run stopped by a signal did not finish: exit as the shell expects, 128 + the signal.
+    if (signal_number) throw ExitStatus{128 + signal_number};
     return;
   }
   const auto& r = j["result"];
@@ -60,6 +66,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output_dir, "Output folder (default: CASE stem + .out)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress lines");
   cmd->add_flag("--resume", o->resume, "Continue from OUTPUT/checkpoint.bin if it exists (bit-identical)");
+  cmd->add_flag("--overwrite", o->overwrite,
+                "Start afresh in an OUTPUT that holds a run, discarding it (without this or --resume, such a folder is "
+                "refused)");
   cmd->add_option("--max-steps", o->max_steps, "Stop after this many lattice steps, with a checkpoint (0: to the end)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--coupling-interval", o->coupling_interval,

@@ -2,16 +2,23 @@
 
 #include <array>
 #include <chrono>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <numbers>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
@@ -29,9 +36,56 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Set by SIGINT / SIGTERM: the run stops at the next step with a checkpoint.
+// Set by SIGINT / SIGTERM to the signal's number: the run stops at the next step with a checkpoint.
 volatile std::sig_atomic_t stop_requested = 0;
-extern "C" void request_stop(int) { stop_requested = 1; }
+extern "C" void request_stop(int signal_number) { stop_requested = signal_number; }
+
+// What of an earlier run a folder holds (empty: nothing).
+std::string earlier_run_in(const fs::path& folder) {
+  for (const char* name : {"checkpoint.bin", "result.json", "series.csv"})
+    if (fs::exists(folder / name)) return (folder / name).string();
+  return "";
+}
+
+// An exclusive lock on OUT/.run.lock for the run's lifetime; the kernel drops it when the
+// process ends, however it ends.
+class FolderLock {
+ public:
+  explicit FolderLock(const fs::path& folder) {
+    const fs::path path = folder / ".run.lock";
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int err = errno;
+      ::close(fd_);
+      if (err == EWOULDBLOCK)
+        throw std::runtime_error(folder.string() + " is in use by another run (it holds " + path.string() +
+                                 "); give each run its own output folder");
+      throw std::runtime_error("cannot lock " + path.string() + ": " + std::strerror(err));
+    }
+  }
+  ~FolderLock() { ::close(fd_); }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// Creates the folder and takes its lock, after refusing to start afresh over a run.
+std::unique_ptr<FolderLock> claim_output_folder(const RunOptions& opt) {
+  if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
+  fs::create_directories(opt.output_dir);
+  auto lock = std::make_unique<FolderLock>(opt.output_dir);
+  const std::string earlier = earlier_run_in(opt.output_dir);
+  if (!earlier.empty() && !opt.resume && !opt.overwrite)
+    throw std::runtime_error(opt.output_dir + " holds a run (" + earlier +
+                             "): give --resume to continue it, --overwrite to discard it, or another output folder");
+  if (opt.overwrite && !opt.resume)
+    for (const char* name : {"checkpoint.bin", "checkpoint_failed.bin", "result.json", "series.csv"})
+      fs::remove(fs::path(opt.output_dir) / name);
+  return lock;
+}
 
 // SIGINT and SIGTERM request a stop while a run is in progress; the previous handlers
 // come back when it ends, however it ends.
@@ -81,8 +135,6 @@ class CaseRun {
         start_(std::chrono::steady_clock::now()),
         sim_(with_coupling_interval(c, opt.coupling_interval)),
         window_{c.window, {}, {}, {}, {}} {
-    if (opt.output_dir.empty()) throw std::invalid_argument("run_case: no output folder");
-    fs::create_directories(opt.output_dir);
     const double gamma = sim_.units().shear_rate;
     auto every = [&](double strain) { return std::max<std::int64_t>(1, std::llround(strain / gamma)); };
     total_steps_ = static_cast<std::int64_t>(std::ceil(c.strain_end / gamma - 1e-9));
@@ -111,7 +163,9 @@ class CaseRun {
         series_.flush();
         sim_.save_checkpoint(checkpoint_path());
       }
-      if (stop_now) return {{"status", "interrupted"}, {"strain", sim_.strain()}, {"checkpoint", checkpoint_path()}};
+      if (stop_now)
+        return {{"status", "interrupted"}, {"strain", sim_.strain()}, {"checkpoint", checkpoint_path()},
+                {"signal", static_cast<int>(stop_requested)}};
       report_progress(step);
     }
     series_.close();
@@ -316,6 +370,9 @@ class CaseRun {
 
 }  // namespace
 
-nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) { return CaseRun(c, opt).run(); }
+nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
+  const std::unique_ptr<FolderLock> lock = claim_output_folder(opt);
+  return CaseRun(c, opt).run();
+}
 
 }  // namespace rbcal::solver

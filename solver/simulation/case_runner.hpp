@@ -12,6 +12,10 @@
 // series is cut back to the checkpoint and the averages rebuilt from it, so a run killed
 // at any moment loses at most the work since its last checkpoint. SIGINT and SIGTERM
 // (Ctrl-C, a scheduler's warning) stop the run after the current step with a checkpoint.
+// A folder that already holds a run (a checkpoint, a series or a result) is refused unless
+// the run resumes it or overwrite is set, and a run holds a lock on its folder
+// (OUT/.run.lock, flock: released by the kernel however the run ends), so that two runs
+// never write one folder.
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -32,10 +36,13 @@ struct RunOptions {
   // coupling_interval_changes.json and reported in result.json; the case block keeps the
   // case's own value.
   int coupling_interval = 0;
+  bool overwrite = false;  // start afresh in a folder that holds a run, discarding it
 };
 
 // Returns the result JSON (also written to result.json), or, when max_steps or a signal
-// stopped the run early, {"status": "interrupted", "strain": ...} with the checkpoint written.
+// stopped the run early, {"status": "interrupted", "strain": ..., "checkpoint": ..., "signal":
+// N} with the checkpoint written (signal 0: max_steps). Throws std::runtime_error for a
+// folder that holds a run (see above) or that another run holds.
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& options);
 
 }  // namespace rbcal::solver

@@ -36,6 +36,7 @@ Viscosity run_planned(const std::string& id) {
   if (!planned) throw std::runtime_error("no case " + id + " in the v1 plan");
   RunOptions o;
   o.output_dir = "validation_runs/dense_" + id;
+  o.overwrite = true;  // a rerun of the group starts afresh
   o.progress = &std::cerr;
   o.progress_seconds = 60.0;
   const nlohmann::json r = run_case(planned->spec, o)["result"];

@@ -40,6 +40,7 @@ SimulationCase spherical_capsule(double ca_g, int nodes_per_radius) {
 nlohmann::json run(const SimulationCase& c, const std::string& name) {
   RunOptions o;
   o.output_dir = "validation_runs/" + name;
+  o.overwrite = true;  // a rerun of the group starts afresh
   o.progress = &std::cerr;
   o.progress_seconds = 60.0;
   const nlohmann::json j = run_case(c, o);
