@@ -3,6 +3,8 @@
 // deep, and how much volume two cells claim at once. The immersed boundary has no contact
 // force and does not resolve gaps below its kernel width, so touching membranes overlap by
 // a fraction of a lattice spacing (docs/library.md: contact models tried and dropped).
+#include <array>
+#include <optional>
 #include <vector>
 
 #include "solver/membrane/triangle_mesh.hpp"
@@ -21,6 +23,12 @@ struct OverlapCount {
 // lengths period_x and period_z (positions may lie outside [0, period)).
 OverlapCount count_overlaps(const std::vector<std::vector<Vec3>>& x, const std::vector<Triangle>& triangles,
                             double period_x, double period_z);
+
+// The first pair of cells (i < j) of which one has a node inside the other, or none; the
+// same periodic images as count_overlaps.
+std::optional<std::array<std::size_t, 2>> first_overlapping_pair(const std::vector<std::vector<Vec3>>& x,
+                                                                 const std::vector<Triangle>& triangles,
+                                                                 double period_x, double period_z);
 
 // The volume inside two or more cells (counted once per extra cell), as a fraction of the
 // cells' summed volume: winding numbers at the centres of a grid of the given spacing over

@@ -50,18 +50,11 @@ ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c)
     case_.cells = seed_cells(c.target_phi, unit_cell, box, gap, c.seed).placements;
   }
   for (std::size_t i = 0; i < case_.cells.size(); ++i) {
-    const CellPlacement& p = case_.cells[i];
-    Vec3 axis(p.rotation[0], p.rotation[1], p.rotation[2]);
-    if (axis.norm() == 0.0) axis = Vec3::UnitZ();
-    const Eigen::Matrix3d rot = Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0, axis.normalized()).toRotationMatrix();
-    const Vec3 at = centre + a * Vec3(p.center[0], p.center[1], p.center[2]);
-    std::vector<Vec3> x;
-    for (const Vec3& v : membrane_->reference().vertices) {
-      x.push_back(at + rot * v);
-      // Keep every node two spacings off the walls: the kernels reach that far.
-      if (x.back().y() < 1.5 || x.back().y() > units_.ny - 2.5)
+    std::vector<Vec3> x = placed_nodes(membrane_->reference(), case_.cells[i], centre, a);
+    // Keep every node two spacings off the walls: the kernels reach that far.
+    for (const Vec3& node : x)
+      if (node.y() < 1.5 || node.y() > units_.ny - 2.5)
         throw std::invalid_argument("cell " + std::to_string(i) + " reaches within two lattice spacings of a wall");
-    }
     x_.push_back(std::move(x));
   }
   v_.assign(x_.size(), std::vector<Vec3>(membrane_->reference().vertices.size(), Vec3::Zero()));

@@ -1,6 +1,7 @@
 #include "solver/simulation/simulation_case.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <stdexcept>
 
 #include "formats/field_reader.hpp"
@@ -8,6 +9,7 @@
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 #include "solver/lattice_units.hpp"
+#include "solver/simulation/cell_overlap.hpp"
 
 namespace rbcal::solver {
 
@@ -18,6 +20,17 @@ TriangleMesh reference_cell(const SimulationCase& c, double radius) {
     case CellShape::Biconcave: break;
   }
   return make_biconcave_cell(c.triangles, radius, c.profile);
+}
+
+std::vector<Vec3> placed_nodes(const TriangleMesh& reference, const CellPlacement& p, const Vec3& centre, double scale) {
+  Vec3 axis(p.rotation[0], p.rotation[1], p.rotation[2]);
+  if (axis.norm() == 0.0) axis = Vec3::UnitZ();
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(p.rotation[3] * std::numbers::pi / 180.0, axis.normalized()).toRotationMatrix();
+  const Vec3 at = centre + scale * Vec3(p.center[0], p.center[1], p.center[2]);
+  std::vector<Vec3> x;
+  x.reserve(reference.vertices.size());
+  for (const Vec3& v : reference.vertices) x.push_back(at + rot * v);
+  return x;
 }
 
 std::string to_string(CellShape s) {
@@ -42,6 +55,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   every_field.skalak_c_per_ca = 1.0;
   every_field.coupling_interval = 2;  // so that node_velocity is written
   every_field.shape = CellShape::Spheroid;  // so that aspect_ratio is written
+  every_field.overlap_allowed = true;
   const nlohmann::json known = case_to_json(every_field);
   for (const char* section : {"params", "cells", "numerics", "run"}) {
     std::vector<std::string> keys;
@@ -92,6 +106,10 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
       c.cells.push_back(cp);
     }
   }
+  if (const nlohmann::json* allowed = r.find("cells.overlap_allowed")) {
+    if (!allowed->is_boolean()) r.fail("cells.overlap_allowed", "must be true or false");
+    c.overlap_allowed = allowed->get<bool>();
+  }
 
   c.resolution.nodes_per_radius = r.integer_or("numerics.N_a", c.resolution.nodes_per_radius, 2, 256);
   c.resolution.tau_out = r.number_or("numerics.tau_out", c.resolution.tau_out, 0.5000001, 10.0);
@@ -123,6 +141,18 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     c.quiescent = q->get<bool>();
   }
   if (c.cells.empty() && c.target_phi == 0.0) r.fail("cells.placements", "no cells: give placements (or params.phi)");
+  // Two placed cells that overlap would start with membranes inside each other, which the
+  // immersed boundary never separates (no contact force): refused, naming the pair.
+  if (c.cells.size() > 1 && !c.overlap_allowed) {
+    const TriangleMesh cell = reference_cell(c, 1.0);
+    std::vector<std::vector<Vec3>> x;
+    for (const CellPlacement& p : c.cells) x.push_back(placed_nodes(cell, p, Vec3::Zero(), 1.0));
+    const auto& box = c.resolution.box_in_radii;
+    if (const auto pair = first_overlapping_pair(x, cell.triangles, box[0], box[2]))
+      r.fail("cells.placements." + std::to_string((*pair)[1]),
+             "overlaps cells.placements." + std::to_string((*pair)[0]) +
+                 " (a node of one lies inside the other); move the centres apart or turn the cells");
+  }
   // The lattice this case implies must exist (e.g. the box a whole number of nodes at N_a):
   // found by fuzzing the plan reader, which otherwise failed later without naming the file.
   try {
@@ -148,6 +178,7 @@ nlohmann::json case_to_json(const SimulationCase& c) {
   if (c.shape == CellShape::Spheroid) j["cells"]["aspect_ratio"] = c.aspect_ratio;
   if (c.skalak_c_per_ca > 0.0) j["cells"]["skalak_c_per_Ca"] = c.skalak_c_per_ca;
   for (const CellPlacement& p : c.cells) j["cells"]["placements"].push_back({{"center", p.center}, {"rotation", p.rotation}});
+  if (c.overlap_allowed) j["cells"]["overlap_allowed"] = true;
   j["numerics"] = {{"N_a", c.resolution.nodes_per_radius},
                    {"tau_out", c.resolution.tau_out},
                    {"box", c.resolution.box_in_radii},

@@ -48,6 +48,9 @@ struct SimulationCase {
   double skalak_c_per_ca = 0.0;
   double effective_skalak_c() const;
   std::vector<CellPlacement> cells;
+  // Placed cells that overlap are refused when the case is read, unless this is set
+  // (cells.overlap_allowed: only for tests of the overlap diagnostics).
+  bool overlap_allowed = false;
   // numerics
   LatticeResolution resolution;
   KernelKind kernel = KernelKind::Peskin4;
@@ -90,6 +93,9 @@ nlohmann::json state_defining_json(const SimulationCase& c);
 SimulationCase read_case(const std::string& path);
 SimulationCase case_from_json(const nlohmann::json& j, const std::string& source);
 nlohmann::json case_to_json(const SimulationCase& c);
+
+// The nodes of a reference cell placed as p says: rotated, then moved to centre + scale * p.center.
+std::vector<Vec3> placed_nodes(const TriangleMesh& reference, const CellPlacement& p, const Vec3& centre, double scale);
 
 // The case's cell at rest (shape, profile and triangle count) with the given radius.
 TriangleMesh reference_cell(const SimulationCase& c, double radius);

@@ -72,3 +72,43 @@ TEST(CellOverlap, DepthAndVolumeOfTwoOverlappingSpheresAcrossTheSeam) {
   EXPECT_EQ(overlap_volume_fraction(apart, sphere.triangles, period, 20.0, period, 0.5), 0.0);
   EXPECT_EQ(count_overlaps(apart, sphere.triangles, period, period).max_depth, 0.0);
 }
+
+// Placed cells that overlap are refused when the case is read, naming both placements; the
+// same cells apart, or with overlap_allowed, are accepted.
+#include "formats/format_error.hpp"
+#include "solver/simulation/simulation_case.hpp"
+
+TEST(PlacedCells, OverlappingPlacementsAreRefused) {
+  nlohmann::json j = {{"schema", "rbcal.case/1"},
+                      {"params", {{"Ca", 0.1}, {"lambda", 5.0}}},
+                      {"cells",
+                       {{"shape", "biconcave"},
+                        {"triangles", 320},
+                        {"placements", {{{"center", {0.0, 0.0, 0.0}}}, {{"center", {0.1, 0.0, 0.0}}}}}}},
+                      {"numerics", {{"N_a", 4}, {"box", {6.0, 6.0, 6.0}}}},
+                      {"run", {{"strain_end", 1.0}, {"window", {0.5, 1.0}}}}};
+  try {
+    case_from_json(j, "two.json");
+    FAIL() << "two cells 0.1 a apart were accepted";
+  } catch (const rbcal::formats::FormatError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("two.json"), std::string::npos) << what;
+    EXPECT_NE(what.find("cells.placements.1"), std::string::npos) << what;
+    EXPECT_NE(what.find("cells.placements.0"), std::string::npos) << what;
+  }
+  // Across the periodic seam in x: centres at -2.9 and +2.9 in a 6a box are 0.2 a apart.
+  j["cells"]["placements"] = {{{"center", {-2.9, 0.0, 0.0}}}, {{"center", {2.9, 0.0, 0.0}}}};
+  EXPECT_THROW(case_from_json(j, "seam.json"), rbcal::formats::FormatError);
+  // Stacked discs 0.8 a apart along their axes (thickness 0.66 a) do not overlap.
+  j["cells"]["placements"] = {{{"center", {0.0, 0.0, 0.0}}}, {{"center", {0.0, 0.0, 0.0}}}};
+  j["cells"]["placements"][1]["center"] = {0.0, 0.0, 0.0};
+  j["cells"]["placements"][1]["rotation"] = {0.0, 0.0, 1.0, 0.0};
+  j["cells"]["placements"][0]["center"] = {0.0, 0.0, -0.4};
+  j["cells"]["placements"][1]["center"] = {0.0, 0.0, 0.4};
+  EXPECT_NO_THROW(case_from_json(j, "stacked.json"));
+  // Allowed on purpose (the overlap diagnostics' own tests).
+  j["cells"]["placements"][1]["center"] = {0.1, 0.0, 0.0};
+  j["cells"]["placements"][0]["center"] = {0.0, 0.0, 0.0};
+  j["cells"]["overlap_allowed"] = true;
+  EXPECT_TRUE(case_from_json(j, "allowed.json").overlap_allowed);
+}
