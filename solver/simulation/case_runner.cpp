@@ -27,6 +27,7 @@
 #include "solver/simulation/block_average.hpp"
 #include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
+#include "solver/simulation/memory_estimate.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
 
@@ -371,6 +372,7 @@ class CaseRun {
 }  // namespace
 
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
+  if (const std::string why = memory_refusal(c, available_memory_bytes()); !why.empty()) throw std::runtime_error(why);
   const std::unique_ptr<FolderLock> lock = claim_output_folder(opt);
   return CaseRun(c, opt).run();
 }

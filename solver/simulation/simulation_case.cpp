@@ -111,6 +111,12 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     c.overlap_allowed = allowed->get<bool>();
   }
 
+  // No default resolution: a case without one silently became the seed study's N_a 16 box of
+  // about 9 GB. The two fields that set a case's size are asked for.
+  for (const char* field : {"numerics.N_a", "numerics.box"})
+    if (!r.find(field))
+      r.fail(field, "missing: give the resolution numerics.N_a (lattice nodes per cell radius; the seed study used "
+                    "16) and the box numerics.box [Lx, H, Lz] in cell radii (the seed study's [16, 10, 16])");
   c.resolution.nodes_per_radius = r.integer_or("numerics.N_a", c.resolution.nodes_per_radius, 2, 256);
   c.resolution.tau_out = r.number_or("numerics.tau_out", c.resolution.tau_out, 0.5000001, 10.0);
   c.resolution.box_in_radii = r.numbers_or<3>("numerics.box", c.resolution.box_in_radii);
