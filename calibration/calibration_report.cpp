@@ -9,6 +9,11 @@
 
 namespace rbcal::calibration {
 
+bool SampleReport::has_estimate() const {
+  return (alpha && alpha->shear_modulus.count > 0) || (direct && direct->shear_modulus > 0.0) ||
+         (mcmc && mcmc->shear_modulus_median > 0.0);
+}
+
 const DirectFitResult* SampleReport::point_fit() const {
   if (direct) return &*direct;
   if (mcmc) return &mcmc->start_fit;

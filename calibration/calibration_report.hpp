@@ -46,6 +46,8 @@ struct SampleReport {
   // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).
   ConsistencyCheck consistency;
 
+  // Whether any method gave G_s (alpha matched a shear rate, the direct fit or the MCMC ran).
+  bool has_estimate() const;
   // The point-wise fit used for fits.csv: the direct fit, else the MCMC's start fit, else none.
   const DirectFitResult* point_fit() const;
   // A few lines per method: G_s with its interval, MCMC diagnostics, warnings

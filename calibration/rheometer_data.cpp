@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -75,8 +76,11 @@ std::vector<std::string> RheometerData::sample_names() const {
 }
 
 RheometerData read_rheometer_csv(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw RheometerDataError(path.string(), 0, "(file)", "is a folder, not a CSV file");
   std::ifstream in(path);
-  if (!in) throw RheometerDataError(path.string(), 0, "(file)", "cannot open for reading");
+  if (!in) throw RheometerDataError(path.string(), 0, "(file)", std::string("cannot open for reading: ") + std::strerror(errno));
   return parse_rheometer_csv(in, path.string());
 }
 
@@ -96,6 +100,8 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
   int line = 0;
   while (std::getline(in, raw)) {
     ++line;
+    // Excel's "CSV UTF-8" starts the file with a byte-order mark; it is not part of the header.
+    if (line == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);
     const std::string text = trim(raw);
     if (text.empty()) continue;
     if (text.front() == '#') {

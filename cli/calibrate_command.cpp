@@ -119,7 +119,14 @@ void add_calibrate_command(CLI::App& app) {
     job.report.plots = !o->no_plots;
     job.sampler.sampler = cal::sampler_from_string(o->sampler);
     job.command_line = command_line(*o);
-    cal::run_calibration_job(job, std::cout);
+    const cal::CalibrationJobResult result = cal::run_calibration_job(job, std::cout);
+    // A run that estimated nothing has failed, whatever it wrote: scripts must see it.
+    int estimated = 0;
+    for (const auto& s : result.report.samples) estimated += s.has_estimate() ? 1 : 0;
+    if (estimated == 0) {
+      std::cerr << "rbcal calibrate: no sample gave an estimate of G_s (the warnings above say why); exit 1\n";
+      throw ExitStatus{1};
+    }
   });
 }
 

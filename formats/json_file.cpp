@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -12,8 +14,10 @@
 namespace rbcal::formats {
 
 nlohmann::json read_json_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw FormatError(file.string(), "is a folder, not a JSON file");
   std::ifstream in(file);
-  if (!in) throw FormatError(file.string(), "cannot open");
+  if (!in) throw FormatError(file.string(), std::string("cannot open: ") + std::strerror(errno));
   std::stringstream text;
   text << in.rdbuf();
   return parse_json_text(text.str(), file.string());

@@ -166,3 +166,23 @@ TEST(RheometerData, TheShippedSampleReads) {
   const CalibrationInput all = read_calibration_input(test_models::shipped_sample_with_all_hematocrits());
   EXPECT_EQ(all.samples.at(0).points.size(), 60u);  // restored: hematocrit 0.55 too
 }
+
+TEST(RheometerData, AByteOrderMarkIsNotPartOfTheHeader) {
+  // Excel's "CSV UTF-8" writes EF BB BF first; the first column was then "\xEF\xBB\xBFsample".
+  const fs::path path = write_temp("bom.csv", std::string("\xEF\xBB\xBF") + kHeader +
+                                                   "s,plasma,0,100,1.2,0.01,3\ns,suspension,0.4,100,4.0,0.1,3\n");
+  const RheometerData data = read_rheometer_csv(path);
+  ASSERT_EQ(data.sample_names().size(), 1u);
+  EXPECT_EQ(data.sample_names()[0], "s");
+}
+
+TEST(RheometerData, AFolderIsNamedAsAFolder) {
+  const fs::path dir = rbcal::testing_support::scratch_path("folder.csv");
+  fs::create_directories(dir);
+  try {
+    read_rheometer_csv(dir);
+    FAIL() << "a folder was read as a CSV file";
+  } catch (const RheometerDataError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+}

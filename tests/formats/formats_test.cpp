@@ -78,7 +78,12 @@ TEST(JsonFile, ReportsSyntaxErrorsWithLineAndWritesAtomically) {
   const std::string message = error_of([&] { read_json_file(file); });
   EXPECT_EQ(message.rfind(file.string() + ": invalid JSON", 0), 0u) << message;
   EXPECT_NE(message.find("line 2"), std::string::npos) << message;
-  EXPECT_EQ(error_of([&] { read_json_file(temp_file("absent.json")); }), temp_file("absent.json").string() + ": cannot open");
+  EXPECT_EQ(error_of([&] { read_json_file(temp_file("absent.json")); }),
+            temp_file("absent.json").string() + ": cannot open: No such file or directory");
+  // A folder given as a file was reported as "invalid JSON (byte 1)".
+  std::filesystem::create_directories(temp_file("folder.json"));
+  EXPECT_EQ(error_of([&] { read_json_file(temp_file("folder.json")); }),
+            temp_file("folder.json").string() + ": is a folder, not a JSON file");
 
   // Found by fuzzing: a number beyond double's range was not reported as the file's error.
   EXPECT_EQ(error_of([&] { parse_json_text("{\"a\": 1e999}", "big.json"); }).rfind("big.json: invalid JSON", 0), 0u);
