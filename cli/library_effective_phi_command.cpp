@@ -55,8 +55,9 @@ void run_effective_phi(const EffectivePhiOptions& o) {
               tiers.size(), tiers.size() == 1 ? "y" : "ies", o.output.c_str());
   std::printf("  cell at radius 1: area %.4f, volume %.4f, mean-curvature integral %.4f\n", terms.area, terms.volume,
               terms.mean_curvature_integral);
-  std::printf("  offset %g +- %g lattice spacings; phi_eff = g phi_actual with g:", o.mapping.offset, o.mapping.offset_sd);
-  for (int n : {6, 8, 10, 12, 16}) std::printf(" %.3f (N_a %d)", ratio(o.mapping.offset / n), n);
+  std::printf("  offset %g +- %g lattice spacings at N_a 8, slope %g per unit of 1 / N_a; phi_eff = g phi_actual with g:",
+              o.mapping.offset, o.mapping.offset_sd, o.mapping.offset_slope);
+  for (int n : {6, 8, 10, 12, 16}) std::printf(" %.3f (N_a %d)", ratio(o.mapping.offset_at(n) / n), n);
   std::printf("\n  %-34s %8s %10s %8s %7s %10s %16s\n", "run", "phi", "phi_actual", "phi_eff", "g", "eta_re", "sd");
   for (const auto& c : mapped.cases) {
     const std::string id = surrogate::mapped_case_id(c);
@@ -85,9 +86,14 @@ void add_library_effective_phi_command(CLI::App& library) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("-o,--output", o->output, "Output library folder (cases/ID_nN.json)")->required();
   cmd->add_option("--offset", o->mapping.offset,
-                  "How much thicker the immersed boundary makes a membrane act, in lattice spacings")
+                  "How much thicker the immersed boundary makes a membrane act, in lattice spacings (at N_a 8 when "
+                  "--offset-slope is given)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--offset-slope", o->mapping.offset_slope,
+                  "How the offset changes with resolution: c(N_a) = OFFSET + SLOPE (1 / N_a - 1 / 8), so that --offset is c "
+                  "at N_a 8 (0: one c at every N_a; studies/ib-thickening)")
+      ->capture_default_str();
   cmd->add_option("--offset-sd", o->mapping.offset_sd, "The offset's sd, entered in each case's sd as if independent (0: not entered; docs/library.md)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);

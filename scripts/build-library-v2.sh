@@ -4,6 +4,7 @@
 #   2. map them to the continuum into data/library/default, the shipped default library:
 #      METHOD=effective-phi (the default since 2026-11-25): every run of both tiers moved
 #      to the volume fraction its cells fill when thickened by OFFSET (0.75) lattice spacings
+#      (at N_a 8; OFFSET_SLOPE, default 0, makes it OFFSET + OFFSET_SLOPE (1 / N_a - 1 / 8))
 #      (rbcal library effective-phi; docs/library.md, "The effective volume fraction"); runs
 #      beyond phi_eff 0.62 are left out. CASE_OFFSET_SD (default 0.15) adds the offset's
 #      uncertainty to each run's sd as if independent, a smoothness prior on the surface (the
@@ -79,7 +80,7 @@ if [ "${METHOD:-effective-phi}" = richardson ]; then
   "$rbcal" library extrapolate "$lib/n6" "$fine" -o "$out" --order "${ORDER:-2.8}" --order-low "${P_LOW:-1.5}" \
     --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
 else
-  "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$out" --offset "${OFFSET:-0.75}" --offset-sd "${CASE_OFFSET_SD:-0.15}" \
+  "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$out" --offset "${OFFSET:-0.75}" --offset-slope "${OFFSET_SLOPE:-0}" --offset-sd "${CASE_OFFSET_SD:-0.15}" \
     --phi-max "${PHI_MAX:-0.62}" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}"
 fi
 "$rbcal" surrogate build "$out"
@@ -94,7 +95,7 @@ if [ "${METHOD:-effective-phi}" != richardson ]; then
       continue
     fi
     echo "family member at offset $c:"
-    "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$work/c$c" --offset "$c" --offset-sd "${CASE_OFFSET_SD:-0.15}" \
+    "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$work/c$c" --offset "$c" --offset-slope "${OFFSET_SLOPE:-0}" --offset-sd "${CASE_OFFSET_SD:-0.15}" \
       --phi-max "${PHI_MAX:-0.62}" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}" > /dev/null
     "$rbcal" surrogate build "$work/c$c" | grep -E "training cases|RMS relative error"
     members+=(--member "$c=$work/c$c/surrogate.json")

@@ -41,9 +41,13 @@ MappedLibrary map_to_effective_volume_fraction(const std::vector<SimulationLibra
       const double h = 1.0 / c.nodes_per_radius;  // a lattice spacing in cell radii
       MappedCase m;
       m.raw = c;
-      m.volume_ratio = volume_ratio(options.offset * h);
-      m.volume_ratio_sd = 0.5 * std::abs(volume_ratio((options.offset + options.offset_sd) * h) -
-                                         volume_ratio(std::max(0.0, options.offset - options.offset_sd) * h));
+      const double offset = options.offset_at(c.nodes_per_radius);
+      if (!(offset >= 0.0))
+        throw std::invalid_argument("the offset at N_a " + std::to_string(c.nodes_per_radius) + " (" +
+                                    std::to_string(offset) + ") is negative: lower --offset-slope");
+      m.volume_ratio = volume_ratio(offset * h);
+      m.volume_ratio_sd = 0.5 * std::abs(volume_ratio((offset + options.offset_sd) * h) -
+                                         volume_ratio(std::max(0.0, offset - options.offset_sd) * h));
       m.phi = m.volume_ratio * c.phi;
       m.phi_actual = m.volume_ratio * c.phi_actual;
       if (m.phi_actual > options.phi_max) {
@@ -68,7 +72,9 @@ nlohmann::json mapped_case_json(const MappedCase& c, const EffectiveVolumeFracti
   j["extrapolation"] = {
       {"method", formats::kEffectiveVolumeFraction},
       {"offset_lattice_spacings", options.offset},
+      {"offset_slope", options.offset_slope},
       {"offset_sd", options.offset_sd},
+      {"offset_at_this_resolution", options.offset_at(c.raw.nodes_per_radius)},
       {"volume_ratio", c.volume_ratio},
       {"volume_ratio_sd", c.volume_ratio_sd},
       {"run_sd", c.run_sd},

@@ -34,6 +34,13 @@ struct EffectiveVolumeFractionOptions {
   // (0.75-0.79). The red cells' runs prefer 0.6 (the runs at N_a 10 and 12 predicted from
   // those at 6 and 8) to 0.9 (N_a 6 and 8 agreeing best with each other) (docs/library.md).
   double offset = 0.75;
+  // How c changes with resolution: c(N_a) = offset + offset_slope (1 / N_a - 1 / 8), so that
+  // offset is c at N_a 8. Rigid bodies of known intrinsic viscosity need a c that falls with
+  // N_a (studies/ib-thickening): the sphere about 1.1, the red cell's oblate spheroid about
+  // 2 lattice spacings per unit of 1 / N_a. 0: one c for every resolution.
+  double offset_slope = 0.0;
+  // c at a given resolution.
+  double offset_at(int nodes_per_radius) const { return offset + offset_slope * (1.0 / nodes_per_radius - 1.0 / 8.0); }
   // The sd of c entered in each case's sd (see above; 0: not entered).
   double offset_sd = 0.15;
   // Runs whose g phi_actual exceeds this are left out (they stand for no physiological sample).
