@@ -304,12 +304,24 @@ nlohmann::json CalibrationJobOptions::to_json() const {
 }
 
 CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
-                                    const CalibrationJobOptions& o, std::ostream& log) {
-  const std::vector<const SampleData*> selected = selected_samples(input, o);
-  const auto compare = compared_samples(o.compare);
+                                    const CalibrationJobOptions& options, std::ostream& log) {
+  const std::vector<const SampleData*> selected = selected_samples(input, options);
+  const auto compare = compared_samples(options.compare);
+  // A model built at one lambda has nothing to say about lambda: it is held there, and said so.
+  CalibrationJobOptions o = options;
+  const surrogate::ParameterRange range = model.range();
+  std::string lambda_note;
+  if (o.setup.fit_lambda && !(range.lambda_max > range.lambda_min * (1.0 + 1e-9))) {
+    o.setup.fit_lambda = false;
+    lambda_note = " (held: the model covers lambda " + shown(range.lambda_min) + " only)";
+  }
   log << "rbcal calibrate: " << o.data_file.string() << " (" << selected.size() << " of " << input.samples.size()
       << " samples), surrogate " << o.surrogate_file.string() << ", method " << o.method << ", lambda "
-      << (o.setup.fit_lambda ? std::string("fitted") : shown(o.setup.lambda)) << "\n";
+      << (o.setup.fit_lambda ? "fitted, prior median " + shown(o.setup.lambda) +
+                                   (o.setup.lambda_prior_log_sd > 0.0 ? ", ln sd " + shown(o.setup.lambda_prior_log_sd)
+                                                                      : std::string(", uniform in ln lambda"))
+                             : shown(o.setup.lambda) + lambda_note)
+      << "\n";
 
   CalibrationReport report;
   report.cell_radius = o.setup.cell_radius;

@@ -27,7 +27,7 @@ struct CalibrationJobOptions {
   std::filesystem::path report_folder = "calibration_report";
   std::string method = "all";            // alpha, direct, mcmc or all
   std::vector<std::string> samples;      // empty: every sample of the file
-  ModelSetup setup;                      // a, lambda, fit_lambda: shared by the methods
+  ModelSetup setup = product_model_setup();  // a, lambda and its prior: shared by the methods
   PlasmaViscosityOptions plasma;         // which plasma rows give eta0
   double phi_max = 1.0;                  // points above are left out
   // Points below this shear rate [1/s] are left out: the simulations have no aggregation,

@@ -239,7 +239,8 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
   if (fit_eta0) result.parameter_names.push_back("ln_eta0");
   for (const auto& n : nuisances) result.parameter_names.push_back(n.name);
   const int parameters = static_cast<int>(result.parameter_names.size());
-  const int fitted_to_data = options.setup.fit_lambda ? 2 : 1;  // eta0 has its own prior residual
+  // Parameters the data alone must fix: eta0, and lambda under its prior, have prior residuals.
+  const int fitted_to_data = options.setup.fit_lambda && options.setup.lambda_prior_log_sd <= 0.0 ? 2 : 1;
 
   FitParameters x;
   x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
@@ -320,6 +321,10 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       problem.SetParameterLowerBound(&x.ln_lambda, 0, ln_lambda_lo);
       problem.SetParameterUpperBound(&x.ln_lambda, 0, ln_lambda_hi);
       free_blocks.push_back(&x.ln_lambda);
+      if (options.setup.lambda_prior_log_sd > 0.0)
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(new GaussianPrior{
+                                     std::log(options.setup.lambda), options.setup.lambda_prior_log_sd}),
+                                 nullptr, &x.ln_lambda);
     } else {
       problem.SetParameterBlockConstant(&x.ln_lambda);
     }

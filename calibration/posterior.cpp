@@ -86,7 +86,15 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
     const double lo = std::log(options_.lambda_min), hi = std::log(options_.lambda_max);
     const double x = theta(lambda_index_);
     if (!(x >= lo && x <= hi)) return minus_infinity;
-    log_p -= std::log(hi - lo);
+    const double s = options_.setup.lambda_prior_log_sd;
+    if (s > 0.0) {
+      // Normal in ln lambda about the setup's lambda (the normaliser of the truncation is a
+      // constant and left out).
+      const double z = (x - std::log(options_.setup.lambda)) / s;
+      log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
+    } else {
+      log_p -= std::log(hi - lo);
+    }
   }
   if (discrepancy_index_ >= 0) {
     const double s = options_.discrepancy_prior_log_sd;

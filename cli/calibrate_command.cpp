@@ -34,7 +34,8 @@ std::string command_line(const CalibrateOptions& o) {
   std::ostringstream line;
   line << "rbcal calibrate " << o.data << " --surrogate " << o.surrogate << " --method " << j.method;
   for (const auto& s : j.samples) line << " --sample " << s;
-  line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? " --fit-lambda" : "") << " --cell-radius-um "
+  line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
+       << j.setup.lambda_prior_log_sd << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
        << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --sampler " << o.sampler << " --chains " << j.sampler.chains << " --walkers "
        << j.sampler.walkers << " --mcmc-max-steps " << j.sampler.max_steps
@@ -63,10 +64,18 @@ void add_calibrate_command(CLI::App& app) {
       ->check(CLI::IsMember({"alpha", "direct", "mcmc", "all"}))
       ->capture_default_str();
   c->add_option("--sample", j.samples, "Sample name (repeatable; default: every sample in the file)");
-  c->add_option("--lambda", j.setup.lambda, "Viscosity ratio lambda = eta1 / eta0 (fixed, or the start with --fit-lambda)")
+  c->add_option("--lambda", j.setup.lambda,
+                "Viscosity ratio lambda = eta1 / eta0: the median of its prior (the value itself with --fix-lambda)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  c->add_flag("--fit-lambda", j.setup.fit_lambda, "Fit lambda too (direct and mcmc), within the surrogate's lambda range");
+  c->add_flag("!--fix-lambda", j.setup.fit_lambda,
+              "Hold lambda at --lambda; by default the direct fit and the MCMC fit it as a nuisance parameter under its "
+              "prior (the alpha method always uses --lambda)");
+  c->add_option("--lambda-prior-sd", j.setup.lambda_prior_log_sd,
+                "Sd of ln lambda's normal prior about ln(--lambda), within the model's lambda range (default: the "
+                "cytoplasm's 6.07 +- 3.8 mPa s over plasma 1.2 mPa s, lambda 1.9-8.2 as 95 %; 0: uniform in ln lambda)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   c->add_option("--cell-radius-um", o->cell_radius_um, "Cell major radius a [um] in Ca = eta0 gamma_dot a / G_s")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -58,7 +58,8 @@ struct PosteriorFunction {
 };
 
 Calibration calibrate(const std::string& data, const std::string& surrogate_file, const std::string& method,
-                      const std::vector<std::string>& samples, double lambda, bool fit_lambda, double cell_radius_um,
+                      const std::vector<std::string>& samples, double lambda, bool fit_lambda, double lambda_prior_sd,
+                      double cell_radius_um,
                       double plateau_min_shear_rate, double phi_max, double min_shear_rate, bool keep_out_of_order,
                       std::uint64_t seed, int threads, int mcmc_max_steps, int chains, int walkers,
                       const std::string& sampler, const std::string& compare, const std::string& report, bool plots) {
@@ -70,6 +71,7 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
   o.samples = samples;
   o.setup.lambda = lambda;
   o.setup.fit_lambda = fit_lambda;
+  o.setup.lambda_prior_log_sd = lambda_prior_sd;
   o.setup.cell_radius = cell_radius_um * 1e-6;
   o.plasma.plateau_min_shear_rate = plateau_min_shear_rate;
   o.phi_max = phi_max;
@@ -160,7 +162,7 @@ void bind_calibration(py::module_& m) {
 
   m.def("calibrate", &calibrate, py::arg("data"), py::arg("surrogate"), py::arg("method") = "all",
         py::arg("samples") = std::vector<std::string>{}, py::arg("lam") = cal::kDefaultViscosityRatio,
-        py::arg("fit_lambda") = false, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
+        py::arg("fit_lambda") = true, py::arg("lambda_prior_sd") = cal::kLambdaPriorLogSd, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
         py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
         py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
         py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 0, py::arg("sampler") = "independence", py::arg("compare") = "",
