@@ -1,5 +1,7 @@
 #include "calibration/calibration_report.hpp"
 
+#include <unistd.h>
+
 #include <stdexcept>
 
 #include "calibration/report_plots.hpp"
@@ -31,15 +33,13 @@ std::string sample_file_stem(const std::string& sample_name) {
   return stem;
 }
 
-ReportFiles write_calibration_report(const CalibrationReport& report, const std::filesystem::path& folder,
-                                     const ReportOptions& options) {
+namespace {
+
+// Every file of the report, written into `folder` (which exists and is empty).
+ReportFiles write_report_files(const CalibrationReport& report, const std::filesystem::path& folder,
+                               const ReportOptions& options) {
   ReportFiles out;
   out.folder = folder;
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec || !std::filesystem::is_directory(folder))
-    throw std::runtime_error("cannot create report folder " + folder.string() + (ec ? ": " + ec.message() : ""));
-
   write_fits_table(report, folder / "fits.csv");
   write_alpha_table(report, folder / "alpha.csv");
   write_gs_per_ca_table(report, folder / "gs_per_ca.csv");
@@ -60,6 +60,49 @@ ReportFiles write_calibration_report(const CalibrationReport& report, const std:
   const std::filesystem::path summary = folder / "summary.json";
   formats::write_json_atomically(summary, report_summary(report, out));
   out.files.push_back(summary);
+  return out;
+}
+
+}  // namespace
+
+ReportFiles write_calibration_report(const CalibrationReport& report, const std::filesystem::path& folder,
+                                     const ReportOptions& options) {
+  namespace fs = std::filesystem;
+  // The report is built in a folder beside the old one and renamed into its place, so that a
+  // report folder always holds one run's files: never an old summary beside new tables, or a
+  // previous run's plots after a --no-plots run, whatever fails half-way (a full disk, a
+  // folder that turns read-only). On failure the old report stays and nothing else is left.
+  const fs::path target = folder.has_filename() ? folder : folder.parent_path();
+  const std::string tag = "." + std::to_string(::getpid());
+  const fs::path staging = target.string() + ".new" + tag, previous = target.string() + ".old" + tag;
+  std::error_code ec;
+  if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), ec);
+  fs::remove_all(staging, ec);
+  if (!fs::create_directory(staging, ec) || ec)
+    throw std::runtime_error("cannot create report folder " + staging.string() + (ec ? ": " + ec.message() : ""));
+  ReportFiles out;
+  try {
+    out = write_report_files(report, staging, options);
+    if (fs::exists(target)) {
+      if (!fs::is_directory(target)) throw std::runtime_error(target.string() + " exists and is not a folder");
+      fs::rename(target, previous);
+    }
+    try {
+      fs::rename(staging, target);
+    } catch (...) {
+      if (fs::exists(previous)) fs::rename(previous, target, ec);  // put the old report back
+      throw;
+    }
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(staging, ec);
+    throw std::runtime_error("cannot write the report into " + target.string() + ": " + e.code().message());
+  } catch (...) {
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  fs::remove_all(previous, ec);
+  for (fs::path& f : out.files) f = target / f.lexically_relative(staging);
+  out.folder = target;
   return out;
 }
 

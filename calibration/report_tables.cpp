@@ -1,7 +1,9 @@
 #include "calibration/report_tables.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -22,7 +24,7 @@ std::string number(double x) {
 class CsvFile {
  public:
   CsvFile(const std::filesystem::path& file, const std::string& header) : path_(file), out_(file) {
-    if (!out_) throw std::runtime_error("cannot write " + file.string());
+    if (!out_) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
     out_ << header << "\n";
   }
   template <typename... Fields>
@@ -33,8 +35,12 @@ class CsvFile {
     ++rows_;
   }
   int close() {
+    out_.flush();
+    const int flush_error = out_ ? 0 : errno;
     out_.close();
-    if (!out_) throw std::runtime_error("error while writing " + path_.string());
+    // The reason (a full disk, a folder gone read-only) is errno of the write that failed.
+    if (!out_ || flush_error)
+      throw std::runtime_error("error while writing " + path_.string() + ": " + std::strerror(flush_error ? flush_error : errno));
     return rows_;
   }
 

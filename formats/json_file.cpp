@@ -41,10 +41,18 @@ void write_file_atomically(const std::filesystem::path& file, const std::string&
   const std::filesystem::path temp = file.string() + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(temp, std::ios::binary);
-    if (!out) throw std::runtime_error(file.string() + ": cannot write (" + temp.string() + ")");
+    if (!out) throw std::runtime_error(file.string() + ": cannot write (" + temp.string() + "): " + std::strerror(errno));
     out << contents;
     out.flush();
-    if (!out) throw std::runtime_error(file.string() + ": error while writing (" + temp.string() + ")");
+    if (!out) {
+      // The reason (a full disk, a folder gone read-only) is the failed write's; the partial
+      // temporary file goes.
+      const std::string why = std::strerror(errno);
+      out.close();
+      std::error_code ignored;
+      std::filesystem::remove(temp, ignored);
+      throw std::runtime_error(file.string() + ": error while writing (" + temp.string() + "): " + why);
+    }
   }
   std::error_code ec;
   std::filesystem::rename(temp, file, ec);
