@@ -9,6 +9,7 @@
 
 #include "calibration/calibration_job.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "cli/data_folder.hpp"
 
 namespace rbcal::cli {
@@ -66,7 +67,7 @@ void add_calibrate_command(CLI::App& app) {
   c->add_option("--sample", j.samples, "Sample name (repeatable; default: every sample in the file)");
   c->add_option("--lambda", j.setup.lambda,
                 "Viscosity ratio lambda = eta1 / eta0: the median of its prior (the value itself with --fix-lambda)")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   c->add_flag("!--fix-lambda", j.setup.fit_lambda,
               "Hold lambda at --lambda; by default the direct fit and the MCMC fit it as a nuisance parameter under its "
@@ -74,14 +75,14 @@ void add_calibrate_command(CLI::App& app) {
   c->add_option("--lambda-prior-sd", j.setup.lambda_prior_log_sd,
                 "Sd of ln lambda's normal prior about ln(--lambda), within the model's lambda range (default: the "
                 "cytoplasm's 6.07 +- 3.8 mPa s over plasma 1.2 mPa s, lambda 1.9-8.2 as 95 %; 0: uniform in ln lambda)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   c->add_option("--cell-radius-um", o->cell_radius_um, "Cell major radius a [um] in Ca = eta0 gamma_dot a / G_s")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   c->add_option("--plateau-min-shear-rate", j.plasma.plateau_min_shear_rate,
                 "Plasma rows with shear rate above this [1/s] give eta0")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   c->add_option("--phi-max", j.phi_max, "Leave out points with phi above this (the seed study used 0.4 for hardened cells)")
       ->check(CLI::Range(0.0, 1.0))
@@ -89,7 +90,7 @@ void add_calibrate_command(CLI::App& app) {
   c->add_option("--min-shear-rate", j.min_shear_rate,
                 "Leave out points below this shear rate [1/s]: whole blood aggregates at low shear, the "
                 "simulations do not (0 keeps all; for washed or hardened cells)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   c->add_flag("--keep-out-of-order", j.keep_out_of_hematocrit_order,
               "Keep points whose viscosity is not above the next lower hematocrit's at the same shear rate "
@@ -98,7 +99,7 @@ void add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--threads", j.sampler.threads,
                 "OpenMP threads over MCMC chains (0: OpenMP's default); results do not depend on it")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   c->add_option("--compare", j.compare, "G_s ratio NUM/DEN of two samples with its interval (needs mcmc)");
   c->add_option("-o,--report", o->report, "Report folder (created if needed)")->capture_default_str();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "cli/scatter_floor_options.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
@@ -89,14 +90,14 @@ void add_library_effective_phi_command(CLI::App& library) {
                   "How much thicker the immersed boundary makes a membrane act, in lattice spacings (at N_a 8 when "
                   "--offset-slope is given)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_option("--offset-slope", o->mapping.offset_slope,
                   "How the offset changes with resolution: c(N_a) = OFFSET + SLOPE (1 / N_a - 1 / 8), so that --offset is c "
                   "at N_a 8 (0: one c at every N_a; studies/ib-thickening)")
       ->capture_default_str();
   cmd->add_option("--offset-sd", o->mapping.offset_sd, "The offset's sd, entered in each case's sd as if independent (0: not entered; docs/library.md)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_option("--phi-max", o->mapping.phi_max, "Leave out runs whose effective phi (g phi_actual) exceeds this")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));  // and not 0 or 1 (the mapping says so, naming --phi-max)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "cli/scatter_floor_options.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
@@ -63,11 +64,11 @@ void add_library_extrapolate_command(CLI::App& library) {
   cmd->add_option("-o,--output", o->output, "Output library folder (cases/ID.json)")->required();
   cmd->add_option("--order", o->extrapolation.order, "Convergence order p of the Richardson estimate")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   cmd->add_option("--order-low", o->extrapolation.order_low,
                   "Other plausible order: half the difference of the two extrapolations enters the sd")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   add_scatter_floor_options(cmd, o->extrapolation, o->scatter_phi);
   cmd->callback([o] {
     apply_scatter_phi(o->scatter_phi, o->extrapolation);

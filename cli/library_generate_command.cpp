@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "cli/whole_line_stream.hpp"
 #include "solver/sweep/sweep_runner.hpp"
 
@@ -145,7 +146,7 @@ void add_library_generate_command(CLI::App& library) {
   cmd->add_option("--threads", o->threads, "OpenMP threads per worker (default: cores / jobs)")->check(CLI::Range(1, 4096));
   cmd->add_option("--case-index", o->case_index,
                   "Run only this case (0-based, plan order: lambda, then Ca, then phi; a listed plan: its order), e.g. $SLURM_ARRAY_TASK_ID")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_flag("--retry-failed", o->retry_failed, "Run again the cases a solver guard stopped (listed in LIB/failed/)");
   cmd->add_flag("-q,--quiet", o->quiet, "Only the summary line");
   cmd->add_option("--worker-name", o->worker, "Name in progress lines (set by --jobs for its workers)")->group("");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "surrogate/case_proposal.hpp"
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
@@ -113,7 +114,7 @@ void add_library_inspect_commands(CLI::App& library) {
   CLI::App* propose = library.add_subcommand(
       "propose", "Next cases where the surrogate's variance is largest (greedy over the plan grid refined, or a user grid)");
   propose->add_option("library", o->library, "Library folder")->required()->check(CLI::ExistingDirectory);
-  propose->add_option("-n,--count", o->count, "How many cases to propose")->capture_default_str()->check(CLI::PositiveNumber);
+  propose->add_option("-n,--count", o->count, "How many cases to propose")->capture_default_str()->check(kPositive);
   propose->add_option("--surrogate", o->surrogate, "Surrogate file (default: LIB/surrogate.json if present, else fit now)")
       ->check(CLI::ExistingFile);
   propose->add_option("--phi", o->phi, "User grid: volume fractions (with --ca and --lambda)")->delimiter(',');

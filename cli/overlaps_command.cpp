@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "solver/membrane/dihedral_bending.hpp"
 #include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
@@ -144,7 +145,7 @@ void add_overlaps_command(CLI::App& app) {
       "overlaps", "How far membranes reach into other cells in a saved state (checkpoint.bin of rbcal simulate)");
   cmd->add_option("checkpoint", o->checkpoint, "A run's checkpoint.bin")->required()->check(CLI::ExistingFile);
   cmd->add_option("--spacing", o->spacing, "Grid spacing of the volume estimate in lattice units (default a / 6)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   cmd->callback([o] { run_overlaps(*o); });
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "solver/simulation/case_runner.hpp"
 
 namespace rbcal::cli {
@@ -70,7 +71,7 @@ void add_simulate_command(CLI::App& app) {
                 "Start afresh in an OUTPUT that holds a run, discarding it (without this or --resume, such a folder is "
                 "refused)");
   cmd->add_option("--max-steps", o->max_steps, "Stop after this many lattice steps, with a checkpoint (0: to the end)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   cmd->add_option("--coupling-interval", o->coupling_interval,
                   "Advance the membrane every K fluid steps instead of the case's numerics.coupling_interval; with "
                   "--resume, continue a checkpoint written under another interval (e.g. 1 after a late instability "

@@ -14,6 +14,7 @@
 
 #include "calibration/model_setup.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_validators.hpp"
 #include "surrogate/offset_family_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "surrogate/trend_check.hpp"
@@ -167,7 +168,7 @@ void add_surrogate_command(CLI::App& app) {
   build->add_option("library", b->library, "Library folder (with cases/)")->required()->check(CLI::ExistingDirectory);
   build->add_option("-o,--output", b->output, "Surrogate file (default: LIB/surrogate.json)");
   build->add_option("--warn-residual", b->warn_limit, "Warn about cases with |standardised LOO residual| above this")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   build->callback([b] { run_build(*b); });
 
   auto p = std::make_shared<SurrogatePredictOptions>();
@@ -176,9 +177,10 @@ void add_surrogate_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   predict->add_option("--phi", p->phi, "Volume fraction")->required()->check(CLI::Range(0.0, 1.0));
-  predict->add_option("--ca", p->ca, "Capillary number eta0 gamma_dot a / G_s")->required()->check(CLI::PositiveNumber);
-  predict->add_option("--lambda", p->lambda, "Viscosity ratio eta1 / eta0")->capture_default_str()->check(CLI::PositiveNumber);
-  predict->add_option("--offset", p->offset, "A family's immersed-boundary offset c (default: its prior mean)");
+  predict->add_option("--ca", p->ca, "Capillary number eta0 gamma_dot a / G_s")->required()->check(kPositive);
+  predict->add_option("--lambda", p->lambda, "Viscosity ratio eta1 / eta0")->capture_default_str()->check(kPositive);
+  predict->add_option("--offset", p->offset, "A family's immersed-boundary offset c (default: its prior mean)")
+      ->check(kFinite);
   predict->callback([p] { run_predict(*p); });
 
   auto f = std::make_shared<SurrogateFamilyOptions>();
@@ -191,10 +193,10 @@ void add_surrogate_command(CLI::App& app) {
   family->add_option("--prior-mean", f->prior_mean, "Prior mean of c [lattice spacings]")->capture_default_str();
   family->add_option("--box-mean", f->box_mean,
                      "Box correction beta's prior mean, ln eta_bulk = (1 + beta) ln eta_re (with --box-sd, --box-source)");
-  family->add_option("--box-sd", f->box_sd, "Box correction's prior sd")->check(CLI::PositiveNumber);
+  family->add_option("--box-sd", f->box_sd, "Box correction's prior sd")->check(kPositive);
   family->add_option("--box-source", f->box_source, "Where the box correction's numbers come from (kept in the file)");
   family->add_option("--prior-sd", f->prior_sd, "Prior sd of c (truncated to the members' offsets)")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositive)
       ->capture_default_str();
   family->add_option("-o,--output", f->output, "Family file (rbcal.surrogate_family/1)")->required();
   family->callback([f] { run_family(*f); });

@@ -1,6 +1,7 @@
 #include "surrogate/viscosity_surrogate.hpp"
 
 #include <cmath>
+#include <string>
 #include <Eigen/QR>
 #include <stdexcept>
 
@@ -102,8 +103,12 @@ ViscositySurrogate::ViscositySurrogate(std::vector<TrainingCase> cases, Gaussian
 }
 
 Eigen::VectorXd ViscositySurrogate::input(double phi, double capillary_number, double viscosity_ratio) const {
-  if (!(capillary_number > 0.0) || !(viscosity_ratio > 0.0) || !std::isfinite(phi))
-    throw std::invalid_argument("viscosity surrogate: need finite phi, Ca > 0 and lambda > 0");
+  // An infinite Ca or lambda would pass "> 0" and come back as NaN predictions.
+  if (!(capillary_number > 0.0 && std::isfinite(capillary_number)) ||
+      !(viscosity_ratio > 0.0 && std::isfinite(viscosity_ratio)) || !std::isfinite(phi))
+    throw std::invalid_argument("viscosity surrogate: need finite phi, finite Ca > 0 and finite lambda > 0 (got phi " +
+                                std::to_string(phi) + ", Ca " + std::to_string(capillary_number) + ", lambda " +
+                                std::to_string(viscosity_ratio) + ")");
   return Eigen::Vector3d(phi, std::log(capillary_number), std::log(viscosity_ratio));
 }
 

@@ -32,3 +32,21 @@ def test_invalid_options_name_the_option(source):
     with pytest.raises(ValueError, match="--method"):
         rbcal.calibrate(str(source / "tests/calibration/data/synthetic_rheometer.csv"),
                         rbcal.shipped_file("library/default/surrogate.json"), method="fit")
+
+
+def test_infinite_or_nan_inputs_raise_instead_of_returning_nan():
+    # predict(ca=inf) had returned arrays of NaN.
+    s = rbcal.Surrogate(rbcal.shipped_file("library/default/surrogate.json"))
+    for bad in ({"ca": float("inf")}, {"lam": float("inf")}, {"phi": float("nan")}):
+        args = {"phi": 0.3, "ca": 0.1, "lam": 5.0}
+        args.update(bad)
+        with pytest.raises(ValueError, match="finite"):
+            s.predict(**args)
+
+
+def test_chain_diagnostics_refuse_a_nan_draw_instead_of_hanging():
+    import numpy as np
+    chains = np.random.default_rng(1).normal(size=(4, 100))
+    chains[1, 17] = np.nan
+    with pytest.raises(ValueError, match="draw 17 of chain 1 is not finite"):
+        rbcal.chain_diagnostics(chains)
