@@ -96,10 +96,12 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
       return a.second.size() < b.second.size();
     });
     groups.clear();
+    std::vector<std::pair<double, SortedCurve>> sorted;  // each curve sorted once, read at every rate
+    for (const auto& [curve_phi, curve] : curves) sorted.emplace_back(curve_phi, SortedCurve(curve));
     for (const auto& r : reference->second) {
       std::vector<double> phi, eta_re;
-      for (const auto& [curve_phi, curve] : curves)
-        if (const auto v = curve_at(curve, r.shear_rate)) {
+      for (const auto& [curve_phi, curve] : sorted)
+        if (const auto v = curve.at(r.shear_rate)) {
           phi.push_back(curve_phi);
           eta_re.push_back(*v);
         }

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "calibration/alpha_method.hpp"
@@ -104,15 +106,20 @@ class SampleCalibration {
     const std::string above_phi_max = "phi above " + shown(o_.phi_max) + " (--phi-max)";
     if (const std::size_t n = leave_out([&](const auto& p) { return p.phi > o_.phi_max ? above_phi_max : ""; }))
       r.warnings.push_back(std::to_string(n) + " points with phi > " + shown(o_.phi_max) + " left out (--phi-max)");
-    if (!o_.keep_out_of_hematocrit_order)
+    if (!o_.keep_out_of_hematocrit_order) {
+      // One pass over the points for all of them (one pass per point had been O(n k)).
+      std::map<std::tuple<int, double, double>, std::string> reasons;
       for (const OutOfOrderPoint& bad : points_out_of_hematocrit_order(sample.points)) {
         const std::string reason = "viscosity below the lower hematocrit's (--keep-out-of-order keeps it): " + bad.reason();
-        leave_out([&](const auto& p) {
-          return p.line == bad.point.line && p.phi == bad.point.phi && p.shear_rate == bad.point.shear_rate ? reason
-                                                                                                             : "";
-        });
+        reasons.emplace(std::tuple{bad.point.line, bad.point.phi, bad.point.shear_rate}, reason);
         r.warnings.push_back("left out, " + reason);
       }
+      if (!reasons.empty())
+        leave_out([&](const auto& p) {
+          const auto it = reasons.find({p.line, p.phi, p.shear_rate});
+          return it == reasons.end() ? std::string() : it->second;
+        });
+    }
     const std::string below_rate = "shear rate below " + shown(o_.min_shear_rate) +
                                    " 1/s (--min-shear-rate: aggregation, which the simulations lack)";
     if (const std::size_t n = leave_out([&](const auto& p) { return p.shear_rate < o_.min_shear_rate ? below_rate : ""; }))

@@ -22,9 +22,10 @@ std::vector<OutOfOrderPoint> points_out_of_hematocrit_order(const std::vector<Re
   std::vector<OutOfOrderPoint> out;
   for (auto it = by_phi.begin(); it != by_phi.end(); ++it) {
     if (it == by_phi.begin()) continue;
-    const auto& [lower_phi, lower_curve] = *std::prev(it);
+    const auto& [lower_phi, lower_points] = *std::prev(it);
+    const SortedCurve lower_curve(lower_points);
     for (const auto& p : it->second)
-      if (const auto lower = curve_at(lower_curve, p.shear_rate); lower && !(p.eta_re > *lower))
+      if (const auto lower = lower_curve.at(p.shear_rate); lower && !(p.eta_re > *lower))
         out.push_back({p, lower_phi, *lower});
   }
   return out;

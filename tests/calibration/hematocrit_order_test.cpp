@@ -53,3 +53,26 @@ TEST(HematocritOrder, FindsTheTwoFlaggedPointsOfThePublishedSample) {
     EXPECT_EQ(b.lower_phi, 0.45);
   }
 }
+
+// The curve sorted once and read by binary search gives, at every rate, what reading the
+// points in order gives: log-log interpolation between the neighbours, the first point at a
+// repeated lowest rate, the measured value at a measured rate, nothing outside.
+#include "calibration/curve_interpolation.hpp"
+
+TEST(SortedCurve, ReadsWhatTheNeighboursGiveAtAnyRate) {
+  const std::vector<RelativeViscosityPoint> curve = {point(0.4, 100, 4.0, 3), point(0.4, 10, 6.0, 1),
+                                                     point(0.4, 1000, 3.0, 5), point(0.4, 10, 6.5, 2)};
+  const SortedCurve sorted(curve);
+  EXPECT_FALSE(sorted.at(9.99).has_value());
+  EXPECT_FALSE(sorted.at(1000.01).has_value());
+  EXPECT_FALSE(sorted.at(std::nan("")).has_value());
+  EXPECT_NEAR(*sorted.at(100), 4.0, 1e-12);
+  EXPECT_NEAR(*sorted.at(1000), 3.0, 1e-12);
+  const double at_10 = *sorted.at(10);
+  EXPECT_TRUE(at_10 == 6.0 || at_10 == 6.5);  // a repeated lowest rate: the first point there
+  // Half-way in ln rate between 100 and 1000: the geometric mean of 4 and 3.
+  EXPECT_NEAR(*sorted.at(std::sqrt(100.0 * 1000.0)), std::sqrt(12.0), 1e-12);
+  for (double rate : {12.0, 50.0, 99.0, 150.0, 700.0}) EXPECT_EQ(*sorted.at(rate), *curve_at(curve, rate));
+  EXPECT_FALSE(SortedCurve({}).at(1.0).has_value());
+  EXPECT_EQ(*SortedCurve({point(0.4, 5, 2.0, 1)}).at(5.0), 2.0);
+}
