@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "formats/format_error.hpp"
+#include "formats/write_error.hpp"
 
 namespace rbcal::formats {
 
@@ -41,7 +42,7 @@ void write_file_atomically(const std::filesystem::path& file, const std::string&
   const std::filesystem::path temp = file.string() + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(temp, std::ios::binary);
-    if (!out) throw std::runtime_error(file.string() + ": cannot write (" + temp.string() + "): " + std::strerror(errno));
+    if (!out) throw WriteError(file.string() + ": cannot write (" + temp.string() + "): " + std::strerror(errno));
     out << contents;
     out.flush();
     if (!out) {
@@ -51,7 +52,7 @@ void write_file_atomically(const std::filesystem::path& file, const std::string&
       out.close();
       std::error_code ignored;
       std::filesystem::remove(temp, ignored);
-      throw std::runtime_error(file.string() + ": error while writing (" + temp.string() + "): " + why);
+      throw WriteError(file.string() + ": error while writing (" + temp.string() + "): " + why);
     }
   }
   std::error_code ec;
@@ -59,7 +60,7 @@ void write_file_atomically(const std::filesystem::path& file, const std::string&
   if (ec) {
     const std::string why = ec.message();
     std::filesystem::remove(temp, ec);
-    throw std::runtime_error(file.string() + ": cannot replace: " + why);
+    throw WriteError(file.string() + ": cannot replace: " + why);
   }
 }
 

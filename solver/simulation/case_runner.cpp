@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "formats/json_file.hpp"
+#include "formats/write_error.hpp"
 #include "formats/provenance.hpp"
 #include "solver/io/format_duration.hpp"
 #include "solver/io/vtk_writer.hpp"
@@ -161,7 +162,7 @@ class CaseRun {
       const bool stop_now = step < total_steps_ && (stop_requested || (opt_.max_steps > 0 &&
                                                                         step - first_step_ + 1 >= opt_.max_steps));
       if ((checkpoint_every_ && step % checkpoint_every_ == 0) || stop_now) {
-        series_.flush();
+        flush_series();
         sim_.save_checkpoint(checkpoint_path());
       }
       if (stop_now)
@@ -169,6 +170,7 @@ class CaseRun {
                 {"signal", static_cast<int>(stop_requested)}};
       report_progress(step);
     }
+    flush_series();
     series_.close();
     return result();
   }
@@ -193,6 +195,11 @@ class CaseRun {
                                                : nlohmann::json::array();
   }
   std::string series_path() const { return opt_.output_dir + "/series.csv"; }
+  // The rows so far on disk; a failed write (a full disk) stops the run as a write error.
+  void flush_series() {
+    series_.flush();
+    if (!series_) throw formats::WriteError("error while writing " + series_path() + ": " + std::strerror(errno));
+  }
 
   void announce() const {
     if (!opt_.progress) return;
@@ -239,7 +246,7 @@ class CaseRun {
 
   void open_series(const std::string& kept_rows) {
     series_.open(series_path(), std::ios::trunc);
-    if (!series_) throw std::runtime_error("cannot write " + series_path());
+    if (!series_) throw formats::WriteError("cannot write " + series_path() + ": " + std::strerror(errno));
     series_ << "strain,eta_re_stresslet,eta_re_wall,taylor_deformation,inclination_deg,max_volume_error,"
                "max_node_mach,axis_vorticity\n"
             << kept_rows << std::setprecision(17);  // exact round trip on resume

@@ -1,5 +1,7 @@
 #include "solver/sweep/sweep_runner.hpp"
 
+#include "formats/write_error.hpp"
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +11,7 @@
 
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
+#include "formats/write_error.hpp"
 #include "solver/io/format_duration.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/sweep/case_claim.hpp"
@@ -116,6 +119,8 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
     nlohmann::json result;
     try {
       result = run_case(pc.spec, ro);
+    } catch (const formats::WriteError&) {
+      throw;  // the machine's failure, not the case's: the sweep stops, and the case runs again later
     } catch (const std::exception& e) {
       formats::write_file_atomically(failed, std::string(e.what()) + "\n");
       ++sum.failed;
