@@ -18,6 +18,7 @@
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "formats/short_number.hpp"
+#include "surrogate/fixed_nuisance_model.hpp"
 #include "surrogate/offset_family_file.hpp"
 
 namespace rbcal::calibration {
@@ -295,6 +296,8 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"samples", samples},
           {"lambda", setup.lambda},
           {"fit_lambda", setup.fit_lambda},
+          {"lambda_prior_log_sd", setup.lambda_prior_log_sd},
+          {"held_nuisances", held_nuisances},
           {"cell_radius_um", setup.cell_radius * 1e6},
           {"plateau_min_shear_rate_per_s", plasma.plateau_min_shear_rate},
           {"phi_max", phi_max},
@@ -364,7 +367,18 @@ CalibrationJobResult run_calibration_job(const CalibrationJobOptions& o, std::os
            " not found; build one with `rbcal surrogate build LIBRARY -o FILE` and pass --surrogate FILE");
   const CalibrationInput input = read_calibration_input(o.data_file, o.plasma);
   selected_samples(input, o);  // a typo in --sample fails before the surrogate is loaded
-  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate_file);
+  const std::unique_ptr<surrogate::ViscosityModel> loaded = surrogate::load_viscosity_model(o.surrogate_file);
+  // Each held nuisance wraps the model once more (--hold NAME=VALUE).
+  std::vector<std::unique_ptr<surrogate::ViscosityModel>> held;
+  const surrogate::ViscosityModel* model = loaded.get();
+  for (const auto& [name, value] : o.held_nuisances) {
+    try {
+      held.push_back(std::make_unique<surrogate::FixedNuisanceModel>(*model, name, value));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--hold " + name + "=" + shown(value) + ": " + o.surrogate_file.string() + ": " + e.what());
+    }
+    model = held.back().get();
+  }
   CalibrationJobResult out;
   out.report = calibrate_samples(input, *model, o, log);
   out.files = write_calibration_report(out.report, o.report_folder, o.report);

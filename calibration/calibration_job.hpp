@@ -10,6 +10,7 @@
 #include <iosfwd>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "calibration/calibration_input.hpp"
@@ -45,6 +46,9 @@ struct CalibrationJobOptions {
     return o;
   }();
   std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
+  // Model nuisances held at a value instead of fitted (name, value): a sensitivity study,
+  // e.g. G_s with the immersed boundary's offset held at 0.6 (surrogate/fixed_nuisance_model.hpp).
+  std::vector<std::pair<std::string, double>> held_nuisances;
   ReportOptions report;
   std::string command_line;              // the equivalent command, for the provenance
 

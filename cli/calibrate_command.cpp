@@ -6,6 +6,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "calibration/calibration_job.hpp"
 #include "cli/commands.hpp"
@@ -27,7 +29,18 @@ struct CalibrateOptions {
   double cell_radius_um = cal::kDefaultCellRadius * 1e6;
   bool no_plots = false;
   std::string sampler = "independence";
+  std::vector<std::string> hold;  // NAME=VALUE
 };
+
+// "offset_c=0.6" -> (offset_c, 0.6); CLI::ValidationError naming --hold otherwise.
+std::pair<std::string, double> held_nuisance(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw CLI::ValidationError("--hold", "expected NAME=VALUE (e.g. offset_c=0.6), got '" + text + "'");
+  std::string value = text.substr(eq + 1);
+  if (const std::string why = kFinite(value); !why.empty()) throw CLI::ValidationError("--hold", text + ": " + why);
+  return {text.substr(0, eq), std::stod(value)};
+}
 
 // The equivalent command with every option spelled out, for the report's provenance.
 std::string command_line(const CalibrateOptions& o) {
@@ -35,6 +48,7 @@ std::string command_line(const CalibrateOptions& o) {
   std::ostringstream line;
   line << "rbcal calibrate " << o.data << " --surrogate " << o.surrogate << " --method " << j.method;
   for (const auto& s : j.samples) line << " --sample " << s;
+  for (const auto& [name, value] : j.held_nuisances) line << " --hold " << name << "=" << value;
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
        << j.setup.lambda_prior_log_sd << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
@@ -102,6 +116,9 @@ void add_calibrate_command(CLI::App& app) {
       ->check(kNonNegative)
       ->capture_default_str();
   c->add_option("--compare", j.compare, "G_s ratio NUM/DEN of two samples with its interval (needs mcmc)");
+  c->add_option("--hold", o->hold,
+                "Hold a model nuisance at a value instead of fitting it, NAME=VALUE (repeatable): e.g. offset_c=0.6 for "
+                "G_s at the immersed-boundary offset 0.6 (a sensitivity study)");
   c->add_option("-o,--report", o->report, "Report folder (created if needed)")->capture_default_str();
   c->add_flag("--no-plots", o->no_plots, "Write summary and tables only");
   c->add_option("--mcmc-max-steps", j.sampler.max_steps, "Stop the MCMC here even if not converged (steps per walker)")
@@ -128,6 +145,7 @@ void add_calibrate_command(CLI::App& app) {
     job.setup.cell_radius = o->cell_radius_um * 1e-6;
     job.report.plots = !o->no_plots;
     job.sampler.sampler = cal::sampler_from_string(o->sampler);
+    for (const std::string& h : o->hold) job.held_nuisances.push_back(held_nuisance(h));
     job.command_line = command_line(*o);
     const cal::CalibrationJobResult result = cal::run_calibration_job(job, std::cout);
     // A run that estimated nothing has failed, whatever it wrote: scripts must see it.

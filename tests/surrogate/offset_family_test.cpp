@@ -287,3 +287,21 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
   EXPECT_THROW(save_surrogate_family(members, 0.75, 0.15, dir / "unequal.json"), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(dir / "unequal.json"));
 }
+
+// A family with its offset held (rbcal calibrate --hold offset_c=C): no nuisance left to fit,
+// and every prediction, joint ones included, is the family's at C.
+#include "surrogate/fixed_nuisance_model.hpp"
+
+TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
+  const OffsetFamilyModel f = family_of(curved, {0.45, 0.6, 0.75, 0.9, 1.05});
+  const FixedNuisanceModel held(f, "offset_c", 0.6);
+  EXPECT_TRUE(held.nuisances().empty());
+  EXPECT_EQ(held.predict(0.3, 0.5, 5.0).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
+  EXPECT_EQ(held.predict_with(0.3, 0.5, 5.0, {}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
+  const std::vector<ViscosityQuery> q = {{0.2, 0.5, 5.0}, {0.3, 0.5, 5.0}};
+  const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {0.6});
+  EXPECT_EQ(a.points[1].eta_re, b.points[1].eta_re);
+  EXPECT_EQ(a.covariance(0, 1), b.covariance(0, 1));
+  EXPECT_THROW(FixedNuisanceModel(f, "offset_c", 1.2), std::invalid_argument);  // outside 0.45 .. 1.05
+  EXPECT_THROW(FixedNuisanceModel(f, "beta", 0.1), std::invalid_argument);      // no such nuisance here
+}
