@@ -132,6 +132,19 @@ class SampleCalibration {
       r.warnings.push_back("no point left that the model can reach: nothing to calibrate (see the lines above)");
       return r;
     }
+    // The likelihood holds the model's errors as a dense n x n covariance (several copies of
+    // 8 n^2 bytes, and n^3 work per evaluation): beyond kMaxFittedPoints the sample is refused
+    // up front, with the numbers, instead of failing on memory half-way.
+    if (sample.points.size() > kMaxFittedPoints) {
+      const double gib = 6.0 * 8.0 * static_cast<double>(sample.points.size()) * sample.points.size() / (1 << 30);
+      r.warnings.push_back(std::to_string(sample.points.size()) + " points to fit, more than the " +
+                           std::to_string(kMaxFittedPoints) + " the correlated likelihood takes (its covariance would need about " +
+                           shown(gib) + " GiB): nothing calibrated; thin the curves (fewer shear rates per hematocrit)");
+      return r;
+    }
+    if (sample.points.size() > kSlowFittedPoints)
+      r.warnings.push_back(std::to_string(sample.points.size()) +
+                           " points: the correlated likelihood costs n^3 per evaluation, so the MCMC may take minutes");
     if (o_.runs("alpha")) alpha(r);
     if (o_.runs("direct")) direct(r);
     if (o_.runs("mcmc")) mcmc(r);

@@ -22,6 +22,12 @@
 
 namespace rbcal::calibration {
 
+// The most points of one sample that are fitted (the correlated likelihood's dense covariance
+// needs several copies of 8 n^2 bytes: about 4.5 GiB at this n), and the count above which a
+// warning says the MCMC will be slow (n^3 per likelihood evaluation).
+inline constexpr std::size_t kMaxFittedPoints = 10000;
+inline constexpr std::size_t kSlowFittedPoints = 1000;
+
 struct CalibrationJobOptions {
   std::filesystem::path data_file;       // rheometer CSV
   std::filesystem::path surrogate_file;  // rbcal.surrogate/1 or rbcal.surrogate_family/1
