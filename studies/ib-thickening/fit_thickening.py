@@ -116,7 +116,7 @@ base = [6.0, 10.0, 8.0]
 # the larger-box run of this study.
 sphere = {f"sphere_n{n}": (n, base, x, 0.0) for n, x in [(6, 3.4489), (8, 3.1371), (10, 2.9774), (12, 2.8831), (16, 2.7733)]}
 sphere.update(load("sphere_*.result.json"))
-report("Sphere (5120 triangles, Ca_G 0.01)", 2.5, tiers_of(sphere, base),
+B_sphere = report("Sphere (5120 triangles, Ca_G 0.01)", 2.5, tiers_of(sphere, base),
        [v for v in sphere.values() if v[1] != base],
        {"volume": lambda d: (1 + d) ** 3, "shell": lambda d: 1 + 3 * d}, base)
 
@@ -125,7 +125,33 @@ S, M, V = spheroid_steiner(eps)
 x_sph = rolling(eps)
 body = lambda d: rolling((eps + d) / (1 + d)) / x_sph * ((eps + d) * (1 + d) ** 2) / eps
 spheroid = load("spheroid_*.result.json")
-report(f"Rigid oblate spheroid, aspect ratio {eps}, rolling (S {S:.4f}, M {M:.4f}, V {V:.4f})", x_sph,
+B_spheroid = report(f"Rigid oblate spheroid, aspect ratio {eps}, rolling (S {S:.4f}, M {M:.4f}, V {V:.4f})", x_sph,
        tiers_of(spheroid, base), [v for v in spheroid.values() if v[1] != base],
        {"volume": steiner_factor(S, M, V), "diameter": lambda d: (1 + d) ** 3, "body": body,
         "shell": lambda d: 1 + 3 * d}, base)
+
+
+# The red cell itself: no exact value, so the question is whether the rigid bodies' c at each
+# N_a (with their box raise) moves every resolution to one continuum X_inf.
+def c_per_n(x_inf, B, tiers, form):
+    return {n: solve_c(x / (x_inf * B), form, n) for n, x, _ in tiers}
+
+S_rbc, V_rbc, M_rbc = 8.716, 1.5605, 10.680  # the 1280-triangle Evans-Fung mesh at radius 1 (docs/library.md)
+g_rbc = steiner_factor(S_rbc, M_rbc, V_rbc)
+c_sphere = c_per_n(2.5, B_sphere, tiers_of(sphere, base), lambda d: (1 + d) ** 3)
+c_spheroid = c_per_n(x_sph, B_spheroid, tiers_of(spheroid, base), steiner_factor(S, M, V))
+B_rbc = 0.5 * (B_sphere + B_spheroid)
+rbc = load("rbc_*.result.json")
+for label, pattern in (("rolling, Ca 0.01", "roll"), ("in the shear plane, Ca 1", "inplane")):
+    tiers = sorted((n, x, s_) for name, (n, b, x, s_) in rbc.items() if pattern in name and b == base)
+    if not tiers:
+        continue
+    print(f"\n## Red cell, lambda 5, {label}: eta_sp / phi and the continuum value each N_a implies")
+    print("| N_a | eta_sp / phi | X_inf with the sphere's c | X_inf with the spheroid's c | X_inf with c 0.75 |")
+    print("|---|---|---|---|---|")
+    for n, x, sem in tiers:
+        cols = []
+        for cs in (c_sphere, c_spheroid, {n: 0.75}):
+            c = cs.get(n)
+            cols.append(f"{x / (B_rbc * g_rbc(c / n)):.3f} (c {c:.3f})" if c is not None else "-")
+        print(f"| {n} | {x:.4f} +- {sem:.4f} | " + " | ".join(cols) + " |")
