@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <memory>
+#include <new>
 #include <numbers>
 #include <ostream>
 #include <sstream>
@@ -381,7 +382,15 @@ class CaseRun {
 nlohmann::json run_case(const SimulationCase& c, const RunOptions& opt) {
   if (const std::string why = memory_refusal(c, available_memory_bytes()); !why.empty()) throw std::runtime_error(why);
   const std::unique_ptr<FolderLock> lock = claim_output_folder(opt);
-  return CaseRun(c, opt).run();
+  try {
+    return CaseRun(c, opt).run();
+  } catch (const std::bad_alloc&) {
+    // The estimate above let it start, yet the memory ran out (other programs took it).
+    throw std::runtime_error("out of memory: the case needs about " +
+                             std::to_string(estimated_peak_bytes(c) >> 20) + " MiB (numerics.N_a " +
+                             std::to_string(c.resolution.nodes_per_radius) +
+                             ", numerics.box); lower them, or free memory and resume with --resume");
+  }
 }
 
 }  // namespace rbcal::solver
