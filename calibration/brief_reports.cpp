@@ -81,6 +81,7 @@ std::string SampleReport::brief_report() const {
                   mc.chains.empty() ? 0 : mc.chains.front().walkers(), mc.converged ? "converged" : "NOT converged");
     out += "  sampler     " + mc.sampler + "\n";
   }
+  if (predictive_check) out += "  PPC         " + predictive_check->line() + "\n";
   for (const auto& w : warnings) out += "  warning: " + w + "\n";
   for (const auto& line : consistency.lines()) out += "  consistency: " + line + "\n";
   return out;

@@ -15,6 +15,7 @@
 #include "calibration/direct_fit.hpp"
 #include "calibration/hematocrit_order.hpp"
 #include "calibration/mcmc_calibration.hpp"
+#include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "formats/short_number.hpp"
@@ -216,6 +217,12 @@ class SampleCalibration {
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;
       r.bands = predictive_bands(model_, *r.mcmc, bo);
+      PredictiveCheckOptions co;
+      co.seed = o_.sampler.seed + 3;
+      r.predictive_check = posterior_predictive_check(model_, *r.mcmc, co);
+      if (r.predictive_check->disagrees())
+        r.warnings.push_back("posterior predictive check: " + r.predictive_check->line() +
+                             ": the model does not follow these data within their errors");
     } catch (const std::exception& e) {
       r.warnings.push_back(std::string("MCMC failed: ") + e.what());
     }

@@ -18,6 +18,7 @@
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/model_reach.hpp"
+#include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 
@@ -42,6 +43,7 @@ struct SampleReport {
   std::optional<McmcCalibration> mcmc;
   std::vector<PredictiveBand> bands;  // posterior-predictive eta(gamma_dot) per phi (with mcmc)
   double band_level = 0.95;           // the bands' probability content (PredictiveBandOptions::level)
+  std::optional<PredictiveCheck> predictive_check;  // each used point in its predictive distribution (with mcmc)
   std::vector<std::string> warnings;  // method failures, points outside the model, chains not converged
   // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).
   ConsistencyCheck consistency;

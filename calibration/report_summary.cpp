@@ -214,6 +214,7 @@ nlohmann::json sample_summary(const SampleReport& s) {
   j["methods"] = methods;
   j["warnings"] = s.warnings;
   j["consistency"] = s.consistency.to_json();
+  if (s.predictive_check) j["posterior_predictive_check"] = s.predictive_check->to_json();
   return j;
 }
 

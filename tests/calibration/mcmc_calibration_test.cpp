@@ -183,3 +183,35 @@ TEST(McmcCalibration, OffsetKeepsItsPriorWhenUnseenAndWidensTheIntervalWhenSeen)
   const auto width = [](const Interval& i) { return std::log(i.upper / i.lower); };
   EXPECT_GT(width(free_offset.shear_modulus_interval), 1.3 * width(held.shear_modulus_interval));
 }
+
+// The posterior predictive check: on data of the model itself about 5 % of the points fall
+// outside their 95 % predictive interval and no disagreement is flagged; when every point of
+// the densest hematocrit is raised by 30 % (a model that cannot follow the data), those points
+// fall outside and the check says so.
+#include "calibration/posterior_predictive_check.hpp"
+
+TEST(PosteriorPredictiveCheck, QuietOnTheModelsOwnDataAndFlagsDataItCannotFollow) {
+  AnalyticViscosityModel model;
+  test_models::SyntheticDesign design;
+  std::mt19937_64 rng(91);
+  SampleData sample = test_models::synthetic_sample(model, design, rng);
+  McmcCalibrationOptions options;
+  options.sampler.threads = 1;
+  const McmcCalibration fair = calibrate_mcmc(sample, model, options);
+  const PredictiveCheck quiet = posterior_predictive_check(model, fair);
+  ASSERT_EQ(quiet.points.size(), sample.points.size());
+  EXPECT_LE(quiet.outside(), 5) << quiet.line();  // 1.6 expected of 32
+  EXPECT_FALSE(quiet.disagrees()) << quiet.line();
+  for (const auto& p : quiet.points) EXPECT_TRUE(p.pit >= 0.0 && p.pit <= 1.0);
+
+  for (auto& p : sample.points)
+    if (p.phi == 0.4) {
+      p.eta_re *= 1.3;
+      p.eta_re_sd *= 1.3;
+    }
+  const McmcCalibration bent = calibrate_mcmc(sample, model, options);
+  const PredictiveCheck flagged = posterior_predictive_check(model, bent);
+  EXPECT_GE(flagged.outside(), 6) << flagged.line();
+  EXPECT_TRUE(flagged.disagrees()) << flagged.line();
+  EXPECT_EQ(flagged.to_json()["points_outside"], flagged.outside());
+}
