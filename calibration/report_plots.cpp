@@ -72,7 +72,8 @@ class ScriptBuilder {
 };
 
 std::string header(const std::string& title) {
-  return "reset\nset title " + quoted(title) + "\nset grid\nset key outside right top\nset datafile missing 'NaN'\n";
+  // The legend below the plot, in rows: at the right it took half the width of the figure.
+  return "reset\nset title " + quoted(title) + "\nset grid\nset key below center horizontal\nset datafile missing 'NaN'\n";
 }
 
 // (a) eta vs shear rate per phi: data, point-wise fit, posterior-predictive median and band.
@@ -88,6 +89,12 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
   std::string plot;
   int colour = 0;
   bool has_band = false;
+  // The viscosity axis spans what is drawn, not the decades around it (a log axis would
+  // otherwise show 1-10 mPa s for data between 3 and 8).
+  double y_lo = 1e300, y_hi = 0.0;
+  auto extend = [&](double y) {
+    if (std::isfinite(y) && y > 0.0) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+  };
   for (const auto& [phi, points] : by_phi) {
     ++colour;
     const std::string id = "s" + std::to_string(index) + "_phi" + std::to_string(colour);
@@ -98,6 +105,7 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
       std::vector<std::vector<double>> rows;
       for (std::size_t i = 0; i < band.shear_rate.size(); ++i)
         rows.push_back({band.shear_rate[i], kMilli * band.median[i], kMilli * band.lower[i], kMilli * band.upper[i]});
+      for (const auto& r : rows) extend(r[2]), extend(r[3]);
       const std::string name = b.block(id + "_band", rows);
       plot += name + " using 1:3:4 with filledcurves" + lt + " fs transparent solid 0.2 noborder notitle, \\\n  ";
       plot += name + " using 1:2 with lines" + lt + " lw 2 notitle, \\\n  ";
@@ -107,8 +115,9 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
     std::vector<std::vector<double>> rows;
     const double eta0 = s.sample.plasma.eta0;
     auto add_row = [&](const RelativeViscosityPoint& p, bool used, double predicted) {
-      rows.push_back({p.shear_rate, kMilli * measured_viscosity(p, eta0), kMilli * measured_se(p, eta0),
-                      used ? 1.0 : 0.0, predicted});
+      const double eta = kMilli * measured_viscosity(p, eta0), se = kMilli * measured_se(p, eta0);
+      rows.push_back({p.shear_rate, eta, se, used ? 1.0 : 0.0, predicted});
+      extend(eta - se), extend(eta + se), extend(predicted);
     };
     if (fit) {
       for (const FittedPoint& f : fit->points)
@@ -141,8 +150,20 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
             ", \\\n  ";
   plot += "keyentry with points lc \"black\" pt 6 title \"not fitted (left out: fits.csv says why)\", \\\n  ";
   plot.erase(plot.size() - 6);  // the last ", \\\n  "
+  std::string y_range;
+  if (y_hi > y_lo) {
+    // Within a decade a log axis has no labelled tick: label 1, 1.5, 2, 3, 4, 5, 6, 8 x 10^k.
+    const double lo = y_lo / 1.06, hi = y_hi * 1.06;
+    std::string tics;
+    for (int k = static_cast<int>(std::floor(std::log10(lo))); k <= static_cast<int>(std::ceil(std::log10(hi))); ++k)
+      for (double m : {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0}) {
+        const double t = m * std::pow(10.0, k);
+        if (t >= lo && t <= hi) tics += (tics.empty() ? "" : ", ") + num(t);
+      }
+    y_range = "set yrange [" + num(lo) + ":" + num(hi) + "]\n" + (tics.empty() ? "" : "set ytics (" + tics + ")\n");
+  }
   b.add({stem + "_fit", header(s.sample.name + ": suspension viscosity, fit and band per phi") +
-                            "set logscale xy\nset xlabel \"shear rate [1/s]\"\n"
+                            "set logscale xy\nset xlabel \"shear rate [1/s]\"\n" + y_range +
                             "set ylabel \"viscosity eta [mPa s]\"\nplot " + plot + "\n"});
 }
 
