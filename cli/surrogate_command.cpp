@@ -26,6 +26,7 @@ namespace {
 struct SurrogateBuildOptions {
   std::string library;
   std::string output;
+  std::string hyperparameters_of;  // a surrogate file whose hyper-parameters are taken (not fitted)
   double warn_limit = 3.0;
 };
 
@@ -72,7 +73,9 @@ void print_model(const surrogate::ViscositySurrogate& s) {
 void run_build(const SurrogateBuildOptions& o) {
   const std::filesystem::path out =
       o.output.empty() ? std::filesystem::path(o.library) / "surrogate.json" : std::filesystem::path(o.output);
-  const surrogate::ViscositySurrogate s = surrogate::build_surrogate(o.library);
+  const surrogate::ViscositySurrogate s = o.hyperparameters_of.empty()
+                                             ? surrogate::build_surrogate(o.library)
+                                             : surrogate::build_surrogate_like(o.library, o.hyperparameters_of);
   surrogate::save_surrogate(s, out);
   std::printf("rbcal surrogate build: %s -> %s\n", o.library.c_str(), out.string().c_str());
   print_model(s);
@@ -167,6 +170,10 @@ void add_surrogate_command(CLI::App& app) {
       "build", "Fit the surrogate to a library (LIB/cases/*.json): hyper-parameters, leave-one-out report -> JSON");
   build->add_option("library", b->library, "Library folder (with cases/)")->required()->check(CLI::ExistingDirectory);
   build->add_option("-o,--output", b->output, "Surrogate file (default: LIB/surrogate.json)");
+  build->add_option("--hyperparameters-of", b->hyperparameters_of,
+                    "Take the hyper-parameters of this surrogate instead of fitting them (members of a surrogate "
+                    "family: the same runs at other offsets)")
+      ->check(CLI::ExistingFile);
   build->add_option("--warn-residual", b->warn_limit, "Warn about cases with |standardised LOO residual| above this")
       ->check(kPositive);
   build->callback([b] { run_build(*b); });

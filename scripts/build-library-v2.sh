@@ -21,7 +21,10 @@
 #      default since 2026-11-25, third session) the family also carries the box correction
 #      beta, its prior from the 8a/16a twin runs committed in data/cases/library_v2/results
 #      (scripts/box_twins.py), integrated out in every fit (docs/calibration.md); BOX=none
-#      leaves it out (docs/library.md, "The box twins").
+#      leaves it out (docs/library.md, "The box twins"). SHARED_HYPERPARAMETERS=1 builds the
+#      members with the central surrogate's hyper-parameters (rbcal surrogate build
+#      --hyperparameters-of), and SAME_RUNS=1 with the central library's runs only (its phi_eff
+#      cut), so that they differ only by the mapping.
 # Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
 # Under either method:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
@@ -95,9 +98,20 @@ if [ "${METHOD:-effective-phi}" != richardson ]; then
       continue
     fi
     echo "family member at offset $c:"
+    member_phi_max="${PHI_MAX:-0.62}"
+    [ "${SAME_RUNS:-0}" = 1 ] && member_phi_max=0.75  # the cut is the central library's (below)
     "$rbcal" library effective-phi "$lib/n6" "$fine" -o "$work/c$c" --offset "$c" --offset-slope "${OFFSET_SLOPE:-0}" --offset-sd "${CASE_OFFSET_SD:-0.15}" \
-      --phi-max "${PHI_MAX:-0.62}" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}" > /dev/null
-    "$rbcal" surrogate build "$work/c$c" | grep -E "training cases|RMS relative error"
+      --phi-max "$member_phi_max" --scatter-floor "${SCATTER_FLOOR:-0.054}" --scatter-phi "${SCATTER_PHI:-0.05,0.41}" > /dev/null
+    if [ "${SAME_RUNS:-0}" = 1 ]; then
+      # The member keeps exactly the central library's runs: members then differ by the mapping
+      # only, not by which runs pass the phi_eff cut (which moved the sparse dense corner).
+      for f in "$work/c$c/cases"/*.json; do
+        [ -f "$out/cases/$(basename "$f")" ] || rm -f "$f" "${f%.json}.csv"
+      done
+    fi
+    shared=()
+    [ "${SHARED_HYPERPARAMETERS:-0}" = 1 ] && shared=(--hyperparameters-of "$out/surrogate.json")
+    "$rbcal" surrogate build "$work/c$c" "${shared[@]}" | grep -E "training cases|RMS relative error"
     members+=(--member "$c=$work/c$c/surrogate.json")
   done
   box=()

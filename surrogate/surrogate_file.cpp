@@ -128,4 +128,10 @@ ViscositySurrogate build_surrogate(const std::filesystem::path& library_root) {
   return ViscositySurrogate::fit(training_cases(read_library(library_root)), library_root.string());
 }
 
+ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root,
+                                        const std::filesystem::path& reference_file) {
+  return ViscositySurrogate::with_hyperparameters_of(training_cases(read_library(library_root)),
+                                                     load_surrogate(reference_file), library_root.string());
+}
+
 }  // namespace rbcal::surrogate

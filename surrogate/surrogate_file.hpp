@@ -22,5 +22,8 @@ ViscositySurrogate load_surrogate(const std::filesystem::path& file);
 
 // read_library(library_root) + ViscositySurrogate::fit, source_library = library_root.
 ViscositySurrogate build_surrogate(const std::filesystem::path& library_root);
+// The same with the hyper-parameters of the surrogate in reference_file (not fitted).
+ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root,
+                                        const std::filesystem::path& reference_file);
 
 }  // namespace rbcal::surrogate

@@ -75,6 +75,15 @@ ViscositySurrogate ViscositySurrogate::fit(std::vector<TrainingCase> cases, std:
   return fitted;
 }
 
+ViscositySurrogate ViscositySurrogate::with_hyperparameters_of(std::vector<TrainingCase> cases,
+                                                             const ViscositySurrogate& reference,
+                                                             std::string source_library) {
+  const SurrogateFitInfo shared{reference.fit_info_.log_marginal_likelihood, 0, 0};  // no starts of its own
+  ViscositySurrogate s(std::move(cases), reference.process_.hyperparameters(), std::move(source_library), shared);
+  s.predictive_sd_scale_ = std::max(1.0, s.held_out_rms());
+  return s;
+}
+
 ViscositySurrogate::ViscositySurrogate(std::vector<TrainingCase> cases, GaussianProcessHyperparameters hyperparameters,
                                        std::string source_library, SurrogateFitInfo fit_info,
                                        double predictive_sd_scale)

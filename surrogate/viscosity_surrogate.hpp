@@ -44,6 +44,12 @@ class ViscositySurrogate final : public ViscosityModel {
  public:
   // Fits the hyper-parameters by maximum marginal likelihood (hyperparameter_fit.hpp).
   static ViscositySurrogate fit(std::vector<TrainingCase> cases, std::string source_library = "");
+  // Takes the hyper-parameters of another surrogate instead of fitting them, its own sd scale
+  // from its held-out runs as fit() does. Members of a surrogate family (the same runs mapped at
+  // other offsets) built this way differ only by the mapping: fitted one by one, their processes
+  // differed by more than the offset moves them where runs are sparse.
+  static ViscositySurrogate with_hyperparameters_of(std::vector<TrainingCase> cases, const ViscositySurrogate& reference,
+                                                    std::string source_library = "");
 
   // Uses the given hyper-parameters and sd scale as they are (no fit): a loaded surrogate, or
   // tests. Throws std::invalid_argument unless predictive_sd_scale >= 1 and finite.

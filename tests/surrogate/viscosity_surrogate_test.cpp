@@ -50,6 +50,25 @@ TEST(ViscositySurrogate, BandsCoverTheKnownFunctionAtHeldOutPoints) {
 
 // The joint prediction: each point as predict gives it, the diagonal its sd^2, neighbours strongly
 // correlated and distant points less, and a valid (positive semi-definite) covariance.
+// A surrogate built with another's hyper-parameters takes them as they are and fits nothing:
+// on the same cases it predicts exactly as the reference; on other cases (a family member: the
+// same runs moved) it keeps the reference's length scales and variance.
+TEST(ViscositySurrogate, TakesAnotherSurrogatesHyperparameters) {
+  const ViscositySurrogate& reference = fitted_surrogate();
+  const ViscositySurrogate same =
+      ViscositySurrogate::with_hyperparameters_of(synthetic_training_cases(SyntheticGrid{}, 11), reference);
+  EXPECT_EQ(same.predict(0.3, 0.2, 2.0).eta_re, reference.predict(0.3, 0.2, 2.0).eta_re);
+  EXPECT_EQ(same.fit_info().starts_tried, 0);
+  std::vector<TrainingCase> moved = synthetic_training_cases(SyntheticGrid{}, 11);
+  for (TrainingCase& c : moved) c.phi *= 1.05;
+  const ViscositySurrogate member = ViscositySurrogate::with_hyperparameters_of(moved, reference);
+  const auto& a = member.process().hyperparameters();
+  const auto& b = reference.process().hyperparameters();
+  EXPECT_EQ(a.packed(), b.packed());
+  EXPECT_NE(member.predict(0.3, 0.2, 2.0).eta_re, reference.predict(0.3, 0.2, 2.0).eta_re);
+  EXPECT_GE(member.predictive_sd_scale(), 1.0);
+}
+
 TEST(ViscositySurrogate, JointPredictionCorrelatesNeighbours) {
   const ViscositySurrogate& s = fitted_surrogate();
   const std::vector<ViscosityQuery> q = {{0.2, 0.1, 2.0}, {0.21, 0.11, 2.0}, {0.35, 0.7, 8.0}, {0.08, 0.02, 1.0}};
