@@ -82,6 +82,7 @@ std::string SampleReport::brief_report() const {
     out += "  sampler     " + mc.sampler + "\n";
   }
   if (predictive_check) out += "  PPC         " + predictive_check->line() + "\n";
+  if (evidence) out += "  evidence    " + evidence->line() + "\n";
   for (const auto& w : warnings) out += "  warning: " + w + "\n";
   for (const auto& line : consistency.lines()) out += "  consistency: " + line + "\n";
   return out;

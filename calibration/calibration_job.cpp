@@ -15,6 +15,8 @@
 #include "calibration/direct_fit.hpp"
 #include "calibration/hematocrit_order.hpp"
 #include "calibration/mcmc_calibration.hpp"
+#include "calibration/model_evidence.hpp"
+#include "calibration/posterior.hpp"
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
@@ -220,6 +222,11 @@ class SampleCalibration {
       PredictiveCheckOptions co;
       co.seed = o_.sampler.seed + 3;
       r.predictive_check = posterior_predictive_check(model_, *r.mcmc, co);
+      const LogPosterior posterior(model_, r.mcmc->plasma_viscosity, r.mcmc->points, r.mcmc->posterior,
+                                   r.mcmc->plasma_viscosity_standard_error);
+      ModelEvidenceOptions eo;
+      eo.seed = o_.sampler.seed + 4;
+      r.evidence = model_evidence([&](const Eigen::VectorXd& theta) { return posterior(theta); }, r.mcmc->mcmc.draws(), eo);
       if (r.predictive_check->disagrees())
         r.warnings.push_back("posterior predictive check: " + r.predictive_check->line() +
                              ": the model does not follow these data within their errors");

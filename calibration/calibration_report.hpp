@@ -17,6 +17,7 @@
 #include "calibration/calibration_input.hpp"
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
+#include "calibration/model_evidence.hpp"
 #include "calibration/model_reach.hpp"
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
@@ -44,6 +45,7 @@ struct SampleReport {
   std::vector<PredictiveBand> bands;  // posterior-predictive eta(gamma_dot) per phi (with mcmc)
   double band_level = 0.95;           // the bands' probability content (PredictiveBandOptions::level)
   std::optional<PredictiveCheck> predictive_check;  // each used point in its predictive distribution (with mcmc)
+  std::optional<ModelEvidence> evidence;            // ln Z of the MCMC's posterior (model_evidence.hpp)
   std::vector<std::string> warnings;  // method failures, points outside the model, chains not converged
   // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).
   ConsistencyCheck consistency;

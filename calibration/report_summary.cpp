@@ -215,6 +215,7 @@ nlohmann::json sample_summary(const SampleReport& s) {
   j["warnings"] = s.warnings;
   j["consistency"] = s.consistency.to_json();
   if (s.predictive_check) j["posterior_predictive_check"] = s.predictive_check->to_json();
+  if (s.evidence) j["evidence"] = s.evidence->to_json();
   return j;
 }
 
