@@ -83,6 +83,13 @@ std::string SampleReport::brief_report() const {
   }
   if (predictive_check) out += "  PPC         " + predictive_check->line() + "\n";
   if (evidence) out += "  evidence    " + evidence->line() + "\n";
+  if (!model_variants.empty()) {
+    out += "  models      ranked by ln Z (importance sampling; a difference of 1 is a factor e):\n";
+    for (const auto& m : model_variants)
+      out += format("    %-32s ln Z %.4g +- %.2g   G_s mcmc %.4g uN/m  %s\n", m.label.c_str(), m.evidence.importance,
+                    m.evidence.importance_error, kMicro * m.shear_modulus_median,
+                    interval_text(m.shear_modulus_interval, kMicro).c_str());
+  }
   for (const auto& w : warnings) out += "  warning: " + w + "\n";
   for (const auto& line : consistency.lines()) out += "  consistency: " + line + "\n";
   return out;

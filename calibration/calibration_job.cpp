@@ -334,11 +334,42 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"seed", sampler.seed},
           {"threads", sampler.threads},
           {"compare", compare},
+          {"compare_models", compare_models},
           {"mcmc_max_steps", sampler.max_steps},
           {"chains", sampler.chains},
           {"walkers", sampler.walkers},
           {"plots", report.plots}};
 }
+
+namespace {
+
+// The sample calibrated by MCMC under each variant of the model; the variants ranked by ln Z
+// (importance sampling), best first.
+void compare_model_variants(const SampleData& sample, const surrogate::ViscosityModel& model,
+                            const CalibrationJobOptions& o, SampleReport& r) {
+  std::vector<std::pair<std::string, ModelSetup>> variants;
+  ModelSetup fitted = o.setup, fixed = o.setup;
+  fitted.fit_lambda = true;
+  fixed.fit_lambda = false;
+  variants.push_back({"lambda fitted under its prior", fitted});
+  variants.push_back({"lambda fixed at " + shown(o.setup.lambda), fixed});
+  for (const auto& [label, setup] : variants) {
+    CalibrationJobOptions v = o;
+    v.method = "mcmc";
+    v.setup = setup;
+    v.compare_models = false;
+    const SampleReport one = SampleCalibration(model, v).run(sample);
+    if (!one.evidence || !one.mcmc) {
+      r.warnings.push_back("--compare-models: " + label + ": no evidence (the MCMC failed; see a run of it alone)");
+      continue;
+    }
+    r.model_variants.push_back({label, *one.evidence, one.mcmc->shear_modulus_median, one.mcmc->shear_modulus_interval});
+  }
+  std::sort(r.model_variants.begin(), r.model_variants.end(),
+            [](const auto& a, const auto& b) { return a.evidence.importance > b.evidence.importance; });
+}
+
+}  // namespace
 
 CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
                                     const CalibrationJobOptions& options, std::ostream& log) {
@@ -366,6 +397,7 @@ CalibrationReport calibrate_samples(const CalibrationInput& input, const surroga
   const SampleCalibration calibrate(model, o);
   for (const SampleData* s : selected) {
     report.samples.push_back(calibrate.run(*s));
+    if (o.compare_models) compare_model_variants(*s, model, o, report.samples.back());
     log << report.samples.back().brief_report() << std::flush;
   }
   if (compare) {

@@ -55,6 +55,9 @@ struct CalibrationJobOptions {
   // Model nuisances held at a value instead of fitted (name, value): a sensitivity study,
   // e.g. G_s with the immersed boundary's offset held at 0.6 (surrogate/fixed_nuisance_model.hpp).
   std::vector<std::pair<std::string, double>> held_nuisances;
+  // Also calibrate each sample (MCMC) with lambda fitted under its prior and held at
+  // setup.lambda, and rank the two by their evidence ln Z.
+  bool compare_models = false;
   ReportOptions report;
   std::string command_line;              // the equivalent command, for the provenance
 

@@ -34,6 +34,15 @@ struct LeftOutPoint {
   std::string reason;
 };
 
+// One model variant of a sample's calibration (rbcal calibrate --compare-models): its ln Z and
+// its G_s, so that variants rank by how well each explains the same data.
+struct ModelVariantResult {
+  std::string label;  // "lambda fitted under its prior", "lambda fixed at 5"
+  ModelEvidence evidence;
+  double shear_modulus_median = 0.0;  // [N/m]
+  Interval shear_modulus_interval;
+};
+
 struct SampleReport {
   SampleData sample;                  // the points the methods used
   std::vector<LeftOutPoint> left_out;  // the sample's other points
@@ -46,6 +55,7 @@ struct SampleReport {
   double band_level = 0.95;           // the bands' probability content (PredictiveBandOptions::level)
   std::optional<PredictiveCheck> predictive_check;  // each used point in its predictive distribution (with mcmc)
   std::optional<ModelEvidence> evidence;            // ln Z of the MCMC's posterior (model_evidence.hpp)
+  std::vector<ModelVariantResult> model_variants;   // --compare-models, best ln Z first
   std::vector<std::string> warnings;  // method failures, points outside the model, chains not converged
   // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).
   ConsistencyCheck consistency;

@@ -216,6 +216,15 @@ nlohmann::json sample_summary(const SampleReport& s) {
   j["consistency"] = s.consistency.to_json();
   if (s.predictive_check) j["posterior_predictive_check"] = s.predictive_check->to_json();
   if (s.evidence) j["evidence"] = s.evidence->to_json();
+  if (!s.model_variants.empty()) {
+    json variants = json::array();
+    for (const auto& m : s.model_variants)
+      variants.push_back({{"model", m.label},
+                          {"evidence", m.evidence.to_json()},
+                          {"G_s_median_uN_per_m", 1e6 * m.shear_modulus_median},
+                          {"G_s_interval_uN_per_m", {1e6 * m.shear_modulus_interval.lower, 1e6 * m.shear_modulus_interval.upper}}});
+    j["model_comparison"] = variants;
+  }
   return j;
 }
 

@@ -49,6 +49,7 @@ std::string command_line(const CalibrateOptions& o) {
   line << "rbcal calibrate " << o.data << " --surrogate " << o.surrogate << " --method " << j.method;
   for (const auto& s : j.samples) line << " --sample " << s;
   for (const auto& [name, value] : j.held_nuisances) line << " --hold " << name << "=" << value;
+  if (j.compare_models) line << " --compare-models";
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
        << j.setup.lambda_prior_log_sd << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
@@ -116,6 +117,9 @@ void add_calibrate_command(CLI::App& app) {
       ->check(kNonNegative)
       ->capture_default_str();
   c->add_option("--compare", j.compare, "G_s ratio NUM/DEN of two samples with its interval (needs mcmc)");
+  c->add_flag("--compare-models", j.compare_models,
+              "Also calibrate each sample by MCMC with lambda fitted and with lambda held at --lambda, and rank the two "
+              "by their evidence ln Z");
   c->add_option("--hold", o->hold,
                 "Hold a model nuisance at a value instead of fitting it, NAME=VALUE (repeatable): e.g. offset_c=0.6 for "
                 "G_s at the immersed-boundary offset 0.6 (a sensitivity study)");
