@@ -221,8 +221,8 @@ nlohmann::json sample_summary(const SampleReport& s) {
     for (const auto& m : s.model_variants)
       variants.push_back({{"model", m.label},
                           {"evidence", m.evidence.to_json()},
-                          {"G_s_median_uN_per_m", 1e6 * m.shear_modulus_median},
-                          {"G_s_interval_uN_per_m", {1e6 * m.shear_modulus_interval.lower, 1e6 * m.shear_modulus_interval.upper}}});
+                          {"G_s_median_uN_per_m", kMicro * m.shear_modulus_median},
+                          {"G_s_interval_uN_per_m", {kMicro * m.shear_modulus_interval.lower, kMicro * m.shear_modulus_interval.upper}}});
     j["model_comparison"] = variants;
   }
   return j;
