@@ -20,9 +20,12 @@ std::string line(const char* pattern, Args... args) {
 
 }  // namespace
 
-CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps) {
+CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
+                                     solver::Backend backend) {
   if (steps < 1) throw std::invalid_argument("coupled-step bench: steps must be >= 1");
-  solver::ShearFlowSimulation sim(c);
+  solver::ShearFlowSimulation sim(c, backend);
+  solver::DeviceStepper* device = sim.device();
+  if (device) device->set_timing(true);
   // NaNs run at their own speed: the guards after every step, outside the timed parts.
   auto step = [&] {
     try {
@@ -31,7 +34,7 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
       } catch (const std::runtime_error& e) {  // the per-step node guard
         throw std::runtime_error(solver::run_stopped(sim.steps_done(), sim.strain(), e.what()));
       }
-      solver::check_state(sim.observe(), sim.steps_done());
+      if (!device) solver::check_state(sim.observe(), sim.steps_done());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(case_name + ": the case is not stable, so no timings: " + e.what());
     }
@@ -54,6 +57,27 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
   out.spreading = t.spreading * per;
   out.indicator = t.indicator * per;
   out.interpolation = t.interpolation * per;
+  out.strain_per_step = sim.units().shear_rate;
+  if (device) {
+    device->set_timing(false);
+    auto start = std::chrono::steady_clock::now();
+    for (int s = 0; s < steps; ++s) step();
+    device->wall_shear_traction();  // a small read: waits for the device
+    out.free_running = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    const solver::Observables o = sim.observe();  // the guards, untimed
+    try {
+      solver::check_state(o, sim.steps_done());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(case_name + ": the case is not stable, so no timings: " + e.what());
+    }
+    sim.device_fluid_steps(1);
+    start = std::chrono::steady_clock::now();
+    sim.device_fluid_steps(steps);
+    out.plain_fluid = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    out.device = solver::device_description();
+    if (solver::device_is_gpu()) out.copy_bandwidth = solver::device_copy_bandwidth(std::size_t{1} << 30, 20);
+    return out;
+  }
   // The plain fluid update of the same lattice (no velocity output, no coupling).
   solver::FluidLattice plain(sim.fluid().config());
   plain.step();
@@ -76,6 +100,22 @@ std::string CoupledStepTimings::brief_report() const {
   s += line("  whole step                   %9.3f ms/step\n", whole() * 1e3);
   s += line("  plain fluid update           %9.3f ms/step (same lattice, no cells)\n", plain_fluid * 1e3);
   s += line("  whole step / plain fluid     %9.2f (target <= 4)\n", whole() / plain_fluid);
+  if (!device.empty()) {
+    const double nodes = static_cast<double>(nx) * ny * nz;
+    // 19 populations read and written, force (3) and viscosity read: 336 B per node.
+    constexpr double bytes_per_update = 19 * 16 + 4 * 8;
+    s += line("  device                       %s\n", device.c_str());
+    s += line("  whole step, free running     %9.3f ms/step (no synchronisation between the parts)\n",
+              free_running * 1e3);
+    s += line("  plain fluid                  %9.1f MLUPS, %.0f GB/s at %.0f B/update\n", nodes / plain_fluid * 1e-6,
+              nodes / plain_fluid * bytes_per_update * 1e-9, bytes_per_update);
+    if (copy_bandwidth > 0)
+      s += line("  device copy bandwidth        %9.0f GB/s (read + written); fluid at %.1f %% of it (target >= 50 %%)\n",
+                copy_bandwidth * 1e-9, 100.0 * nodes / plain_fluid * bytes_per_update / copy_bandwidth);
+    const double steps_to_40 = 40.0 / strain_per_step;
+    s += line("  to strain 40                 %9.0f steps, %.1f min at the free-running step\n", steps_to_40,
+              steps_to_40 * free_running / 60.0);
+  }
   s += line("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling() / fluid);
   return s;
 }
@@ -86,6 +126,9 @@ nlohmann::json CoupledStepTimings::to_json() const {
           {"indicator_builds", indicator_builds},
           {"coupling_interval", coupling_interval},
           {"plain_fluid_seconds_per_step", plain_fluid},
+          {"free_running_seconds_per_step", free_running},
+          {"device", device},
+          {"device_copy_bytes_per_s", copy_bandwidth},
           {"seconds", {{"fluid", fluid * n},
                        {"membrane_forces", membrane_forces * n},
                        {"ordering", ordering * n},

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "solver/device/device_stepper.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::bench {
@@ -21,6 +22,13 @@ struct CoupledStepTimings {
   // Seconds per step.
   double fluid = 0, membrane_forces = 0, ordering = 0, spreading = 0, indicator = 0, interpolation = 0;
   double plain_fluid = 0;
+  // The device path only: the step run freely (no synchronisation between its parts), the
+  // device, and its device-to-device copy bandwidth (bytes read + written per second; 0 on
+  // host threads).
+  double free_running = 0;
+  std::string device;
+  double copy_bandwidth = 0;
+  double strain_per_step = 0;  // gamma_dot in lattice units
   double whole() const { return fluid + membrane_forces + ordering + spreading + indicator + interpolation; }
   double coupling() const { return whole() - fluid; }
 
@@ -29,7 +37,10 @@ struct CoupledStepTimings {
 };
 
 // Two warm-up steps, then `steps` timed steps of the case, then as many plain fluid
-// steps. Throws std::runtime_error naming the case when it is not stable.
-CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps);
+// steps. Throws std::runtime_error naming the case when it is not stable. On the device
+// backend the parts are timed with a synchronisation after each, then the step again
+// without, and the guards run once at the end.
+CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
+                                     solver::Backend backend = solver::Backend::Cpu);
 
 }  // namespace rbcal::bench

@@ -12,6 +12,7 @@
 #include "bench/coupled_step.hpp"
 #include "bench/lattice_throughput.hpp"
 #include "bench/roofline.hpp"
+#include "cli/backend_option.hpp"
 #include "cli/commands.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
@@ -31,10 +32,12 @@ struct BenchOptions {
   std::string json_path;
   std::string case_path;  // case mode: time the parts of a coupled step
   int case_steps = 20;
+  std::string backend = "cpu";
 };
 
 void run_case_bench(const BenchOptions& o) {
-  const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps);
+  const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps,
+                                                               backend_from_option(o.backend));
   std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n%s", o.case_path.c_str(), build_info::git_revision,
               omp_get_max_threads(), formats::host_name().c_str(), t.brief_report().c_str());
   if (!o.json_path.empty()) {
@@ -120,7 +123,12 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--case-steps", opts->case_steps, "Case mode: timed steps (after 2 warm-up steps)")
       ->capture_default_str();
-  cmd->callback([opts] { run_bench(*opts); });
+  add_backend_option(cmd, opts->backend);
+  cmd->callback([opts] {
+    if (opts->backend == "device" && opts->case_path.empty())
+      throw CLI::ValidationError("--backend device", "times a case: give --case FILE");
+    run_bench(*opts);
+  });
 }
 
 }  // namespace rbcal::cli

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/backend_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_validators.hpp"
 #include "cli/whole_line_stream.hpp"
@@ -37,6 +38,7 @@ struct GenerateOptions {
   bool retry_failed = false;
   bool quiet = false;
   std::string worker;  // set for the processes that --jobs starts
+  std::string backend = "cpu";
 };
 
 // An MPI rank (OpenMPI, MPICH/Hydra, Slurm) names the worker, and the number of ranks
@@ -71,6 +73,7 @@ int run_jobs(const GenerateOptions& o, int threads) {
                                    "--threads", std::to_string(threads)};
   if (o.retry_failed) base.push_back("--retry-failed");
   if (o.quiet) base.push_back("--quiet");
+  base.insert(base.end(), {"--backend", o.backend});
   struct sigaction sa {};
   sa.sa_handler = forward_signal;
   ::sigaction(SIGTERM, &sa, nullptr);
@@ -120,6 +123,7 @@ void run_generate(const GenerateOptions& o) {
   so.worker = o.worker.empty() ? rank.name : o.worker;
   so.workers = o.worker.empty() ? rank.ranks : std::max(1, o.jobs);
   so.retry_failed = o.retry_failed;
+  so.backend = backend_from_option(o.backend);
   WholeLineStream progress(STDERR_FILENO);
   so.progress = o.quiet ? nullptr : &progress;
   const solver::SweepSummary s = solver::run_sweep(plan, so);
@@ -149,6 +153,7 @@ void add_library_generate_command(CLI::App& library) {
       ->check(kNonNegative);
   cmd->add_flag("--retry-failed", o->retry_failed, "Run again the cases a solver guard stopped (listed in LIB/failed/)");
   cmd->add_flag("-q,--quiet", o->quiet, "Only the summary line");
+  add_backend_option(cmd, o->backend);
   cmd->add_option("--worker-name", o->worker, "Name in progress lines (set by --jobs for its workers)")->group("");
   cmd->callback([o] { run_generate(*o); });
 }

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/backend_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_validators.hpp"
 #include "solver/simulation/case_runner.hpp"
@@ -19,6 +20,7 @@ struct SimulateOptions {
   bool overwrite = false;
   long long max_steps = 0;
   int coupling_interval = 0;
+  std::string backend = "cpu";
 };
 
 void run_simulate(const SimulateOptions& o) {
@@ -32,6 +34,7 @@ void run_simulate(const SimulateOptions& o) {
   ro.overwrite = o.overwrite;
   ro.max_steps = o.max_steps;
   ro.coupling_interval = o.coupling_interval;
+  ro.backend = backend_from_option(o.backend);
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
   if (!j.contains("result")) {
@@ -77,6 +80,7 @@ void add_simulate_command(CLI::App& app) {
                   "--resume, continue a checkpoint written under another interval (e.g. 1 after a late instability "
                   "at 2). Recorded in coupling_interval_changes.json and result.json")
       ->check(CLI::Range(1, 1000));
+  add_backend_option(cmd, o->backend);
   cmd->callback([o] { run_simulate(*o); });
 }
 

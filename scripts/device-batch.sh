@@ -9,6 +9,10 @@
 #           stopped (with a checkpoint) after LIMIT seconds; packs the finished results, all
 #           series and the logs into $OUT/results.tar.gz and up to four unfinished
 #           checkpoints into $OUT (what the tool brings back: 8 files of 16 MiB at most).
+#   here:   bash scripts/device-batch.sh pack BINARY...
+#           the same for several binaries (a GPU build's rbcal and device_tests), compressed
+#           to .devrun.tar.xz, which the tool carries where the uncompressed folder would not
+#           fit beside the repository (scripts/gpu-check.sh unpacks it there).
 # Back here, finished cases go to RUNS/TIER/NAME.out/ (result.json, series.csv), unfinished
 # ones with their checkpoint.bin and series.csv, where scripts/run-cases.sh resumes them.
 set -u
@@ -19,7 +23,17 @@ if [ "$mode" = prepare ]; then
   du -sh .devrun
   exit 0
 fi
-[ "$mode" = run ] || { echo "usage: $0 prepare BINARY | run LIMIT TIER CASE_NAME..."; exit 2; }
+if [ "$mode" = pack ]; then
+  rm -rf .devrun .devrun.tar.xz && mkdir .devrun
+  for binary in "$@"; do
+    cp "$binary" .devrun/
+    for lib in $(ldd "$binary" | awk '/=>/ {print $3} /ld-linux/ {print $1}'); do cp -Ln "$lib" .devrun/; done
+  done
+  tar cJf .devrun.tar.xz .devrun && rm -rf .devrun
+  du -sh .devrun.tar.xz
+  exit 0
+fi
+[ "$mode" = run ] || { echo "usage: $0 prepare BINARY | pack BINARY... | run LIMIT TIER CASE_NAME..."; exit 2; }
 limit=$1 tier=$2; shift 2
 here=$(pwd)
 lscpu | grep -E "Model name|^CPU\(s\)|L3"

@@ -18,76 +18,6 @@ std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
   return (static_cast<std::size_t>(x) * ny + y) * nz + z;
 }
 
-// First node of the support and the weights along one direction. The 2- and 4-point
-// weights come in closed form from the fractional position: the four Peskin weights
-// share one square root (substitute r + 1, r, 1 - r, 2 - r into the kernel), which
-// makes this several times cheaper than four kernel evaluations.
-// First lattice node of the support around r: even supports straddle r, the 3-point
-// one is centred on the nearest node.
-int support_start(KernelKind kernel, double r) {
-  const int support = kernel_support(kernel);
-  return support == 3 ? static_cast<int>(std::lround(r)) - 1 : static_cast<int>(std::floor(r)) - (support - 1) / 2;
-}
-
-void weights_1d(KernelKind kernel, double r, int support, int& first, std::array<double, 4>& w) {
-  const double f = std::floor(r);
-  const double t = r - f;  // in [0, 1)
-  switch (kernel) {
-    case KernelKind::Linear2:
-      first = static_cast<int>(f);
-      w[0] = 1.0 - t;
-      w[1] = t;
-      return;
-    case KernelKind::Peskin4: {
-      first = static_cast<int>(f) - 1;
-      const double q = std::sqrt(1.0 + 4.0 * t - 4.0 * t * t);
-      w[0] = (3.0 - 2.0 * t - q) / 8.0;
-      w[1] = (3.0 - 2.0 * t + q) / 8.0;
-      w[2] = (1.0 + 2.0 * t + q) / 8.0;
-      w[3] = (1.0 + 2.0 * t - q) / 8.0;
-      return;
-    }
-    case KernelKind::Roma3:
-      break;
-  }
-  first = support_start(kernel, r);
-  for (int i = 0; i < support; ++i) w[i] = kernel_weight(kernel, r - (first + i));
-}
-
-}  // namespace
-
-KernelStencil make_stencil(KernelKind kernel, const Vec3& p, int nx, int ny, int nz) {
-  KernelStencil s;
-  s.count = kernel_support(kernel);
-  int fx, fy, fz;
-  weights_1d(kernel, p.x(), s.count, fx, s.wx);
-  weights_1d(kernel, p.y(), s.count, fy, s.wy);
-  weights_1d(kernel, p.z(), s.count, fz, s.wz);
-  // One modulo per direction, only where the support starts outside the box; its later
-  // nodes wrap at most once.
-  const int x0 = fx >= 0 && fx < nx ? fx : wrap(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap(fz, nz);
-  bool clipped = false;
-  for (int i = 0; i < s.count; ++i) {
-    s.x[i] = x0 + i < nx ? x0 + i : wrap(x0 + i, nx);
-    s.z[i] = z0 + i < nz ? z0 + i : wrap(z0 + i, nz);
-    s.y[i] = fy + i;
-    if (s.y[i] < 0 || s.y[i] >= ny) {
-      s.wy[i] = 0.0;  // beyond a wall
-      s.y[i] = 0;
-      clipped = true;
-    }
-  }
-  if (clipped) {
-    double wy_sum = 0.0;
-    for (int i = 0; i < s.count; ++i) wy_sum += s.wy[i];
-    if (wy_sum > 0.0)
-      for (int i = 0; i < s.count; ++i) s.wy[i] /= wy_sum;
-  }
-  return s;
-}
-
-namespace {
-
 // Four consecutive doubles as one vector: the z rows of the 4-point stencil.
 using v4d = double __attribute__((vector_size(4 * sizeof(double))));
 
@@ -116,17 +46,9 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
       }
     return;
   }
-  for (int a = 0; a < s.count; ++a)
-    for (int b = 0; b < s.count; ++b) {
-      const double wab = s.wx[a] * s.wy[b];
-      if (wab == 0.0) continue;
-      const std::size_t row = lattice_index(s.x[a], s.y[b], 0, ny, nz);
-      for (int c = 0; c < s.count; ++c) {
-        const double w = wab * s.wz[c];
-        const std::size_t node = row + s.z[c];
-        for (int d = 0; d < 3; ++d) f[d][node] += w * force[d];
-      }
-    }
+  for_each_stencil_node(s, ny, nz, [&](std::size_t node, double w) {
+    for (int d = 0; d < 3; ++d) f[d][node] += w * force[d];
+  });
 }
 
 }  // namespace

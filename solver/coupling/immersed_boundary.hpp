@@ -10,23 +10,16 @@
 #include <utility>
 #include <vector>
 
+#include "solver/coupling/kernel_stencil.hpp"
 #include "solver/coupling/peskin_kernel.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 #include "solver/membrane/triangle_mesh.hpp"
 
 namespace rbcal::solver {
 
-// The kernel's footprint around one point: node offsets and weights per direction.
-// Two cache lines exactly (16-bit indices: lattices up to 32767 nodes a side): the
-// stencils of all nodes are stored once per membrane update and read twice.
-struct alignas(64) KernelStencil {
-  std::array<double, 4> wx{}, wy{}, wz{};
-  std::array<std::int16_t, 4> x{}, y{}, z{};  // lattice indices (wrapped in x and z)
-  std::int16_t count = 0;                     // support width
-};
-static_assert(sizeof(KernelStencil) == 128);
-
-KernelStencil make_stencil(KernelKind kernel, const Vec3& position, int nx, int ny, int nz);
+inline KernelStencil make_stencil(KernelKind kernel, const Vec3& p, int nx, int ny, int nz) {
+  return make_stencil(kernel, p.x(), p.y(), p.z(), nx, ny, nz);
+}
 
 // Membrane nodes sorted by the lattice node where their stencil starts, with copies of
 // their positions and forces in that order: neighbours in the list touch the same

@@ -11,24 +11,26 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/device/host_device.hpp"
+
 namespace rbcal::solver {
 
 enum class KernelKind { Linear2, Roma3, Peskin4 };
 
-inline int kernel_support(KernelKind k) { return k == KernelKind::Linear2 ? 2 : (k == KernelKind::Roma3 ? 3 : 4); }
+RBCAL_HD inline int kernel_support(KernelKind k) { return k == KernelKind::Linear2 ? 2 : (k == KernelKind::Roma3 ? 3 : 4); }
 
-inline double kernel_weight(KernelKind k, double r) {
-  const double a = std::abs(r);
+RBCAL_HD inline double kernel_weight(KernelKind k, double r) {
+  const double a = fabs(r);
   switch (k) {
     case KernelKind::Linear2:
       return a < 1.0 ? 1.0 - a : 0.0;
     case KernelKind::Roma3:
-      if (a <= 0.5) return (1.0 + std::sqrt(1.0 - 3.0 * a * a)) / 3.0;
-      if (a <= 1.5) return (5.0 - 3.0 * a - std::sqrt(std::max(0.0, 1.0 - 3.0 * (1.0 - a) * (1.0 - a)))) / 6.0;
+      if (a <= 0.5) return (1.0 + sqrt(1.0 - 3.0 * a * a)) / 3.0;
+      if (a <= 1.5) return (5.0 - 3.0 * a - sqrt(fmax(0.0, 1.0 - 3.0 * (1.0 - a) * (1.0 - a)))) / 6.0;
       return 0.0;
     case KernelKind::Peskin4:
-      if (a <= 1.0) return (3.0 - 2.0 * a + std::sqrt(1.0 + 4.0 * a - 4.0 * a * a)) / 8.0;
-      if (a <= 2.0) return (5.0 - 2.0 * a - std::sqrt(std::max(0.0, -7.0 + 12.0 * a - 4.0 * a * a))) / 8.0;
+      if (a <= 1.0) return (3.0 - 2.0 * a + sqrt(1.0 + 4.0 * a - 4.0 * a * a)) / 8.0;
+      if (a <= 2.0) return (5.0 - 2.0 * a - sqrt(fmax(0.0, -7.0 + 12.0 * a - 4.0 * a * a))) / 8.0;
       return 0.0;
   }
   return 0.0;

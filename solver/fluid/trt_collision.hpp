@@ -15,6 +15,7 @@
 // zero components cost nothing.
 #include <utility>
 
+#include "solver/device/host_device.hpp"
 #include "solver/fluid/d3q19.hpp"
 
 namespace rbcal::solver {
@@ -25,7 +26,7 @@ using d3q19::c;
 
 // s * v for a lattice-velocity component s in {-1, 0, 1}, added to sum.
 template <int s, class T>
-inline T accumulate(T sum, T v) {
+RBCAL_HD inline T accumulate(T sum, T v) {
   if constexpr (s == 1) return sum + v;
   else if constexpr (s == -1) return sum - v;
   else return sum;
@@ -33,7 +34,7 @@ inline T accumulate(T sum, T v) {
 
 // c_q . (x, y, z) without multiplications.
 template <int q, class T>
-inline T dot_c(T x, T y, T z) {
+RBCAL_HD inline T dot_c(T x, T y, T z) {
   T r = T{};
   r = accumulate<c[q][0]>(r, x);
   r = accumulate<c[q][1]>(r, y);
@@ -42,7 +43,7 @@ inline T dot_c(T x, T y, T z) {
 }
 
 template <int d, class T, int... q>
-inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
+RBCAL_HD inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
   T sum = T{};
   ((sum = accumulate<c[q][d]>(sum, f[q])), ...);
   return sum;
@@ -53,7 +54,7 @@ inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
 // Collides the populations f[0..18] of one node (or one vector of nodes) in place; with
 // u_out, also stores the velocity u that entered the collision (x, y, z).
 template <class T>
-inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = nullptr) {
+RBCAL_HD inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = nullptr) {
   using namespace d3q19;
   using namespace trt_detail;
   constexpr auto all = std::make_integer_sequence<int, Q>{};
@@ -79,16 +80,19 @@ inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = n
   const T force_minus = 1.0 - 0.5 * omega_minus;
   const T base = rho * (1.0 - 1.5 * usq);  // rho (1 - 3/2 u^2)
 
-  f[0] = f[0] - omega_plus * (f[0] - w[0] * base) - force_plus * (w[0] * 3.0) * uf;
+  // The weights bound to constexpr locals: evaluated at compile time, also in device code.
+  constexpr double w0 = w[0];
+  f[0] = f[0] - omega_plus * (f[0] - w0 * base) - force_plus * (w0 * 3.0) * uf;
 
   auto pair = [&]<int q>(std::integral_constant<int, q>) {
     constexpr int qb = q + 1;  // opposite direction (see d3q19.hpp ordering)
     const T cu = dot_c<q>(ux, uy, uz);
     const T cf = dot_c<q>(fx, fy, fz);
-    const T eq_plus = w[q] * (base + (4.5 * rho) * cu * cu);
-    const T eq_minus = (w[q] * 3.0) * rho * cu;
-    const T src_plus = w[q] * (9.0 * cu * cf - 3.0 * uf);
-    const T src_minus = (w[q] * 3.0) * cf;
+    constexpr double wq = w[q];
+    const T eq_plus = wq * (base + (4.5 * rho) * cu * cu);
+    const T eq_minus = (wq * 3.0) * rho * cu;
+    const T src_plus = wq * (9.0 * cu * cf - 3.0 * uf);
+    const T src_minus = (wq * 3.0) * cf;
     const T f_plus = 0.5 * (f[q] + f[qb]);
     const T f_minus = 0.5 * (f[q] - f[qb]);
     const T d_plus = force_plus * src_plus - omega_plus * (f_plus - eq_plus);

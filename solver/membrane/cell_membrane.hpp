@@ -27,6 +27,10 @@ class CellMembrane {
 
   const TriangleMesh& reference() const { return reference_; }
   double reference_volume() const { return volume_.reference_volume(); }
+  const MembraneElasticity& elasticity() const { return elastic_; }
+  const DihedralBending& bending() const { return bending_; }
+  bool has_bending() const { return with_bending_; }
+  double volume_stiffness() const { return volume_.stiffness(); }
 
  private:
   TriangleMesh reference_;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/membrane/element_forces.hpp"
+
 namespace rbcal::solver {
 
 double DihedralBending::hinge_constant(double bending_modulus, BendingConversion conversion) {
@@ -63,60 +65,8 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
     const double* inv_min_n2sq = inv_min_n2sq_.data() + first;
 #pragma omp simd reduction(+ : energy)
     for (int i = 0; i < n; ++i) {
-      const double ax = in[AX][i], ay = in[AY][i], az = in[AZ][i];
-      const double bx = in[BX][i], by = in[BY][i], bz = in[BZ][i];
-      const double cx = in[CX][i], cy = in[CY][i], cz = in[CZ][i];
-      const double dx = in[DX][i], dy = in[DY][i], dz = in[DZ][i];
-      const double ex = bx - ax, ey = by - ay, ez = bz - az;  // the edge
-      const double ux = cx - ax, uy = cy - ay, uz = cz - az;
-      const double vx = dx - bx, vy = dy - by, vz = dz - bz;
-      // n1 = e x (c - a), n2 = (a - b) x (d - b) = v x e
-      const double n1x = ey * uz - ez * uy, n1y = ez * ux - ex * uz, n1z = ex * uy - ey * ux;
-      const double n2x = vy * ez - vz * ey, n2y = vz * ex - vx * ez, n2z = vx * ey - vy * ex;
-      const double len2 = ex * ex + ey * ey + ez * ez;
-      const double n1sq = n1x * n1x + n1y * n1y + n1z * n1z, n2sq = n2x * n2x + n2y * n2y + n2z * n2z;
-      // One division and two square roots for |e|, 1/|e|, 1/(|n1| |n2|), 1/|n1|^2 and
-      // 1/|n2|^2 (divisions and roots bound this loop; it had seven and three).
-      const double len = std::sqrt(len2);
-      const double n1n2sq = n1sq * n2sq;
-      const double q = 1.0 / (len * n1n2sq);
-      const double inv_len = q * n1n2sq, inv_n1n2sq = q * len;
-      // cos and sin of theta - theta0 from those of theta and theta0 (no atan2, sin, cos):
-      // |n1 x n2| = |n1||n2| because both normals are perpendicular to the edge.
-      const double crx = n1y * n2z - n1z * n2y, cry = n1z * n2x - n1x * n2z, crz = n1x * n2y - n1y * n2x;
-      const double sin_t = (crx * ex + cry * ey + crz * ez) * inv_len, cos_t = n1x * n2x + n1y * n2y + n1z * n2z;
-      const double inv_r = std::sqrt(inv_n1n2sq);
-      const double cos_delta = (cos_t * cos0[i] + sin_t * sin0[i]) * inv_r;
-      const double sin_delta = (sin_t * cos0[i] - cos_t * sin0[i]) * inv_r;
-      energy += kd * (1.0 - cos_delta);
-      // Gradient of the dihedral angle: the wing vertices move along their triangle
-      // normals at rate 1/height; the edge vertices take the rest so that the sum and
-      // the torque of the gradient vanish.
-      const double sc = -len * n2sq * inv_n1n2sq, sd = -len * n1sq * inv_n1n2sq;
-      const double gcx = sc * n1x, gcy = sc * n1y, gcz = sc * n1z;
-      const double gdx = sd * n2x, gdy = sd * n2y, gdz = sd * n2z;
-      const double inv_len2 = inv_len * inv_len;
-      const double pc = ((cx - bx) * ex + (cy - by) * ey + (cz - bz) * ez) * inv_len2;
-      const double pd = (vx * ex + vy * ey + vz * ez) * inv_len2;
-      const double qc = (ux * ex + uy * ey + uz * ez) * inv_len2;
-      const double qd = ((dx - ax) * ex + (dy - ay) * ey + (dz - az) * ez) * inv_len2;
-      // A collapsed wing's hold (header) is applied after the loop, where it is needed:
-      // here only the squared factor, min(1, |n|^2 / |n_min|^2) over the two wings.
-      const double r1 = n1sq * inv_min_n1sq[i], r2 = n2sq * inv_min_n2sq[i];
-      held_sq[i] = r1 < r2 ? (r1 < 1.0 ? r1 : 1.0) : (r2 < 1.0 ? r2 : 1.0);
-      const double de = -kd * sin_delta;
-      out[AX][i] = de * (pc * gcx + pd * gdx);
-      out[AY][i] = de * (pc * gcy + pd * gdy);
-      out[AZ][i] = de * (pc * gcz + pd * gdz);
-      out[BX][i] = -de * (qc * gcx + qd * gdx);
-      out[BY][i] = -de * (qc * gcy + qd * gdy);
-      out[BZ][i] = -de * (qc * gcz + qd * gdz);
-      out[CX][i] = de * gcx;
-      out[CY][i] = de * gcy;
-      out[CZ][i] = de * gcz;
-      out[DX][i] = de * gdx;
-      out[DY][i] = de * gdy;
-      out[DZ][i] = de * gdz;
+      const HingeReference r{cos0[i], sin0[i], inv_min_n1sq[i], inv_min_n2sq[i]};
+      energy += hinge_forces(&in[0][i], kBlock, r, kd, &out[0][i], kBlock, held_sq[i]);
     }
     for (int i = 0; i < n; ++i) {
       const Hinge& h = hinges_[first + i];
@@ -128,6 +78,12 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
     }
   }
   return energy;
+}
+
+std::vector<HingeReference> DihedralBending::references() const {
+  std::vector<HingeReference> r(hinges_.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = {cos0_[i], sin0_[i], inv_min_n1sq_[i], inv_min_n2sq_[i]};
+  return r;
 }
 
 double DihedralBending::energy(const std::vector<Vec3>& x) const {

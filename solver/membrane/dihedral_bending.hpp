@@ -25,6 +25,7 @@
 // free of net force and torque. Healthy meshes are unaffected.
 #include <vector>
 
+#include "solver/membrane/element_forces.hpp"
 #include "solver/membrane/triangle_mesh.hpp"
 
 namespace rbcal::solver {
@@ -54,6 +55,11 @@ class DihedralBending {
   // Signed angle between the normals of (a, b, c) and (b, a, d); positive where the
   // surface is convex (as on a sphere with outward orientation).
   static double hinge_angle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+  double hinge_constant() const { return k_d_; }
+  const std::vector<Hinge>& hinges() const { return hinges_; }
+  // Each hinge's reference data, in the order of hinges() (for the device path).
+  std::vector<HingeReference> references() const;
 
   // Fraction of its rest area below which a wing triangle's gradient is held.
   static constexpr double kCollapsedArea = 0.02;

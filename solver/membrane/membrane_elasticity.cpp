@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/membrane/element_forces.hpp"
+
 namespace rbcal::solver {
 
 MembraneElasticity::MembraneElasticity(const TriangleMesh& reference, const MembraneMaterial& material)
@@ -59,26 +61,8 @@ double add_element_forces(const std::vector<Vec3>& x, const MembraneElasticity::
     const double* area = el.area.data() + first;
 #pragma omp simd reduction(+ : energy)
     for (int i = 0; i < n; ++i) {
-      const double e1x = in[BX][i] - in[AX][i], e1y = in[BY][i] - in[AY][i], e1z = in[BZ][i] - in[AZ][i];
-      const double e2x = in[CX][i] - in[AX][i], e2y = in[CY][i] - in[AY][i], e2z = in[CZ][i] - in[AZ][i];
-      const double g11 = e1x * e1x + e1y * e1y + e1z * e1z;
-      const double g12 = e1x * e2x + e1y * e2y + e1z * e2z;
-      const double g22 = e2x * e2x + e2y * e2y + e2z * e2z;
-      const double i1 = inv_g11[i] * g11 + 2.0 * inv_g12[i] * g12 + inv_g22[i] * g22 - 2.0;
-      const double i2 = (g11 * g22 - g12 * g12) * inv_det_g[i] - 1.0;
-      const EnergyDensity w = law == MembraneLaw::Skalak ? skalak(i1, i2, gs, c) : neo_hookean(i1, i2, gs);
-      energy += area[i] * w.w;
-      // dI1/de1 = 2 (G^11 e1 + G^12 e2), dI2/de1 = 2 (g22 e1 - g12 e2) / det G; likewise for e2.
-      const double a = 2.0 * area[i] * w.dw_dI1;
-      const double b = 2.0 * area[i] * w.dw_dI2 * inv_det_g[i];
-      const double p11 = a * inv_g11[i] + b * g22, p12 = a * inv_g12[i] - b * g12;
-      const double p22 = a * inv_g22[i] + b * g11;
-      out[0][i] = -(p11 * e1x + p12 * e2x);
-      out[1][i] = -(p11 * e1y + p12 * e2y);
-      out[2][i] = -(p11 * e1z + p12 * e2z);
-      out[3][i] = -(p12 * e1x + p22 * e2x);
-      out[4][i] = -(p12 * e1y + p22 * e2y);
-      out[5][i] = -(p12 * e1z + p22 * e2z);
+      const ElasticElementReference r{inv_g11[i], inv_g12[i], inv_g22[i], inv_det_g[i], area[i]};
+      energy += elastic_element_forces<law>(&in[0][i], kBlock, r, gs, c, &out[0][i], kBlock);
     }
     for (int i = 0; i < n; ++i) {
       const Vec3 f1(out[0][i], out[1][i], out[2][i]), f2(out[3][i], out[4][i], out[5][i]);

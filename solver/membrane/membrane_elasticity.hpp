@@ -32,6 +32,8 @@ class MembraneElasticity {
     std::vector<double> area;                       // reference area A0
   };
 
+  const Elements& elements() const { return elements_; }
+
  private:
   MembraneMaterial material_;
   Elements elements_;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "solver/device/host_device.hpp"
+
 namespace rbcal::solver {
 
 enum class MembraneLaw { Skalak, NeoHookean };
@@ -23,7 +25,7 @@ struct EnergyDensity {
 };
 
 // Skalak et al., Biophys. J. 13 (1973) 245: w = G_s/4 (I1^2 + 2 I1 - 2 I2 + C I2^2).
-inline EnergyDensity skalak(double i1, double i2, double gs, double c) {
+RBCAL_HD inline EnergyDensity skalak(double i1, double i2, double gs, double c) {
   return {0.25 * gs * (i1 * i1 + 2.0 * i1 - 2.0 * i2 + c * i2 * i2), 0.5 * gs * (i1 + 1.0),
           0.5 * gs * (c * i2 - 1.0)};
 }
@@ -31,7 +33,7 @@ inline EnergyDensity skalak(double i1, double i2, double gs, double c) {
 // Neo-Hookean (zero-thickness limit of an incompressible rubber sheet, as used in the
 // capsule benchmarks, e.g. Barthes-Biesel, Diaz & Dhenin, J. Fluid Mech. 460 (2002) 211):
 // w = G_s/2 (lambda1^2 + lambda2^2 - 3 + 1/(lambda1^2 lambda2^2)) = G_s/2 (I1 - 1 + 1/(I2 + 1)).
-inline EnergyDensity neo_hookean(double i1, double i2, double gs) {
+RBCAL_HD inline EnergyDensity neo_hookean(double i1, double i2, double gs) {
   const double inv_j2 = 1.0 / (i2 + 1.0);
   return {0.5 * gs * (i1 - 1.0 + inv_j2), 0.5 * gs, -0.5 * gs * inv_j2 * inv_j2};
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "solver/membrane/element_forces.hpp"
+
 namespace rbcal::solver {
 
 double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double scale,
@@ -14,7 +16,6 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
   alignas(64) double in[kCoords][kBlock];
   alignas(64) double out[kCoords][kBlock];  // s b x c, s c x a, s a x b
   double six_v = 0.0;
-  const double s = scale / 6.0;
   for (std::size_t first = 0; first < triangles.size(); first += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, triangles.size() - first));
     for (int i = 0; i < n; ++i)
@@ -22,20 +23,7 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
         for (int d = 0; d < 3; ++d) in[3 * v + d][i] = x[triangles[first + i][v]][d];
 #pragma omp simd reduction(+ : six_v)
     for (int i = 0; i < n; ++i) {
-      const double ax = in[AX][i], ay = in[AY][i], az = in[AZ][i];
-      const double bx = in[BX][i], by = in[BY][i], bz = in[BZ][i];
-      const double cx = in[CX][i], cy = in[CY][i], cz = in[CZ][i];
-      const double bcx = by * cz - bz * cy, bcy = bz * cx - bx * cz, bcz = bx * cy - by * cx;
-      six_v += ax * bcx + ay * bcy + az * bcz;
-      out[0][i] = s * bcx;
-      out[1][i] = s * bcy;
-      out[2][i] = s * bcz;
-      out[3][i] = s * (cy * az - cz * ay);
-      out[4][i] = s * (cz * ax - cx * az);
-      out[5][i] = s * (cx * ay - cy * ax);
-      out[6][i] = s * (ay * bz - az * by);
-      out[7][i] = s * (az * bx - ax * bz);
-      out[8][i] = s * (ax * by - ay * bx);
+      six_v += triangle_volume_gradient(&in[0][i], kBlock, scale, &out[0][i], kBlock);
     }
     for (int i = 0; i < n; ++i)
       for (int v = 0; v < 3; ++v)

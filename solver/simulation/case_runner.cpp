@@ -136,7 +136,7 @@ class CaseRun {
       : c_(c),
         opt_(opt),
         start_(std::chrono::steady_clock::now()),
-        sim_(with_coupling_interval(c, opt.coupling_interval)),
+        sim_(with_coupling_interval(c, opt.coupling_interval), opt.backend),
         window_{c.window, {}, {}, {}, {}} {
     const double gamma = sim_.units().shear_rate;
     auto every = [&](double strain) { return std::max<std::int64_t>(1, std::llround(strain / gamma)); };
@@ -338,6 +338,7 @@ class CaseRun {
         {"inclination_deg", angle.mean},
         {"inclination_deg_sem", angle.sem},
         {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
+        {"backend", opt_.backend == Backend::Device ? "device (" + device_description() + ")" : "cpu"},
     };
     // Membranes that interpenetrate at the end (the immersed boundary has no contact force).
     // About 1 s for a library case (76 cells of 642 nodes); some minutes for the seed

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "solver/device/device_stepper.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::solver {
@@ -37,6 +38,7 @@ struct RunOptions {
   // case's own value.
   int coupling_interval = 0;
   bool overwrite = false;  // start afresh in a folder that holds a run, discarding it
+  Backend backend = Backend::Cpu;  // Device: every step on the device path (a GPU in a CUDA build)
 };
 
 // Returns the result JSON (also written to result.json), or, when max_steps or a signal

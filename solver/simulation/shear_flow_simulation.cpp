@@ -29,7 +29,7 @@ FluidConfig fluid_config(const LatticeUnits& u, bool quiescent) {
 
 }  // namespace
 
-ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c)
+ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c, Backend backend)
     : case_(c),
       units_(derive_lattice_units(c.flow, c.resolution)),
       fluid_(fluid_config(units_, c.quiescent)),
@@ -68,6 +68,54 @@ ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c)
         fluid_.set_equilibrium(fluid_.index(ix, iy, iz), 1.0, 0.0, 0.0,
                                -u_wall + 2.0 * u_wall * (iy + 0.5) / units_.ny);
   update_viscosity();
+  if (backend == Backend::Device) {
+    device_ = std::make_unique<DeviceStepper>(case_, units_, *membrane_, x_.size());
+    device_->upload(host_state(), 0);
+  }
+}
+
+ShearFlowSimulation::~ShearFlowSimulation() = default;
+
+DeviceHostState ShearFlowSimulation::host_state() const {
+  return {&fluid_, &x_, &v_, &f_, &x_indicator_, &u_field_, &u_field_steps_};
+}
+
+void ShearFlowSimulation::device_fluid_steps(int steps) {
+  if (!device_) throw std::logic_error("device_fluid_steps: not on the device backend");
+  device_->fluid_steps(steps);
+  fluid_stale_ = true;
+}
+
+void ShearFlowSimulation::refresh_cells() const {
+  if (!cells_stale_) return;
+  device_->download_cells(host_state());
+  cells_stale_ = false;
+}
+
+void ShearFlowSimulation::refresh_fluid() const {
+  if (!fluid_stale_) return;
+  device_->download_fluid(host_state());
+  fluid_stale_ = false;
+}
+
+const StepTimings& ShearFlowSimulation::timings() const {
+  if (device_) {
+    const DeviceTimings& d = device_->timings();
+    timings_ = StepTimings{};
+    timings_.membrane_forces = d.membrane_forces;
+    timings_.spreading = d.spreading;
+    timings_.indicator = d.indicator;
+    timings_.indicator_builds = d.indicator_builds;
+    timings_.fluid = d.fluid;
+    timings_.interpolation = d.interpolation;
+    timings_.steps = d.steps;
+  }
+  return timings_;
+}
+
+void ShearFlowSimulation::reset_timings() {
+  timings_ = StepTimings{};
+  if (device_) device_->reset_timings();
 }
 
 Vec3 ShearFlowSimulation::box_centre() const {
@@ -172,6 +220,11 @@ void ShearFlowSimulation::move_cells(double dt) {
 }
 
 void ShearFlowSimulation::step() {
+  if (device_) {
+    device_->step();
+    cells_stale_ = fluid_stale_ = true;
+    return;
+  }
   using clock = std::chrono::steady_clock;
   auto t = clock::now();
   auto lap = [&](double& into) {
@@ -213,6 +266,8 @@ void ShearFlowSimulation::step() {
 }
 
 void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
+  refresh_cells();
+  refresh_fluid();
   CheckpointState s;
   s.case_json = state_defining_json(case_).dump();
   s.steps = fluid_.steps_done();
@@ -289,10 +344,15 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
     x_indicator_ = std::move(s.indicator_positions);
     rebuild_viscosity();
   }
+  if (device_) {
+    device_->upload(host_state(), fluid_.steps_done());
+    cells_stale_ = fluid_stale_ = false;
+  }
   return saved_interval;
 }
 
 Observables ShearFlowSimulation::observe() const {
+  refresh_cells();
   Observables o;
   o.strain = strain();
   const double eta0 = units_.nu_out;  // rho = 1
@@ -313,8 +373,13 @@ Observables ShearFlowSimulation::observe() const {
     o.cells.push_back(c);
   }
   o.eta_re_stresslet = 1.0 + sum(2, 1) / box_volume / (eta0 * gamma);
-  const WallTraction t = fluid_.wall_traction();
-  o.eta_re_wall = 0.5 * (t.bottom[2] - t.top[2]) / (eta0 * gamma);
+  if (device_) {
+    const std::array<double, 2> t = device_->wall_shear_traction();
+    o.eta_re_wall = 0.5 * (t[0] - t[1]) / (eta0 * gamma);
+  } else {
+    const WallTraction t = fluid_.wall_traction();
+    o.eta_re_wall = 0.5 * (t.bottom[2] - t.top[2]) / (eta0 * gamma);
+  }
   return o;
 }
 

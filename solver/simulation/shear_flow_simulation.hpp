@@ -19,6 +19,7 @@
 #include "solver/coupling/immersed_boundary.hpp"
 #include "solver/coupling/inside_fraction.hpp"
 #include "solver/coupling/stresslet.hpp"
+#include "solver/device/device_stepper.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 #include "solver/membrane/cell_membrane.hpp"
 #include "solver/simulation/simulation_case.hpp"
@@ -58,13 +59,16 @@ inline constexpr double kMaxNodeMach = 0.3;
 
 class ShearFlowSimulation {
  public:
-  explicit ShearFlowSimulation(const SimulationCase& c);
+  // Backend::Device runs every step on the device path (device_stepper.hpp): on the GPU
+  // in a CUDA build, on the host's threads otherwise.
+  explicit ShearFlowSimulation(const SimulationCase& c, Backend backend = Backend::Cpu);
+  ~ShearFlowSimulation();
 
   void step();
   Observables observe() const;
 
-  const StepTimings& timings() const { return timings_; }
-  void reset_timings() { timings_ = StepTimings{}; }
+  const StepTimings& timings() const;
+  void reset_timings();
 
   // Checkpoints (checkpoint.hpp): restoring continues bit-identically.
   void save_checkpoint(const std::string& path) const;
@@ -75,17 +79,37 @@ class ShearFlowSimulation {
   // coupling interval the checkpoint was written under.
   int restore_checkpoint(const std::string& path, bool any_coupling_interval = false);
 
-  double strain() const { return static_cast<double>(fluid_.steps_done()) * units_.shear_rate; }
-  std::int64_t steps_done() const { return fluid_.steps_done(); }
+  double strain() const { return static_cast<double>(steps_done()) * units_.shear_rate; }
+  std::int64_t steps_done() const { return device_ ? device_->steps_done() : fluid_.steps_done(); }
   const LatticeUnits& units() const { return units_; }
   const SimulationCase& simulation_case() const { return case_; }
-  const FluidLattice& fluid() const { return fluid_; }
+  const FluidLattice& fluid() const {
+    refresh_fluid();
+    return fluid_;
+  }
+  // On the device path: the inside fraction of the start or the last restore.
   const InsideFraction& inside_fraction() const { return inside_; }
-  const std::vector<std::vector<Vec3>>& positions() const { return x_; }
-  const std::vector<std::vector<Vec3>>& velocities() const { return v_; }
-  const std::vector<std::vector<Vec3>>& membrane_forces() const { return f_; }
+  const std::vector<std::vector<Vec3>>& positions() const {
+    refresh_cells();
+    return x_;
+  }
+  const std::vector<std::vector<Vec3>>& velocities() const {
+    refresh_cells();
+    return v_;
+  }
+  const std::vector<std::vector<Vec3>>& membrane_forces() const {
+    refresh_cells();
+    return f_;
+  }
   // Positions the inside fraction was last built from (empty for lambda = 1).
-  const std::vector<std::vector<Vec3>>& indicator_positions() const { return x_indicator_; }
+  const std::vector<std::vector<Vec3>>& indicator_positions() const {
+    refresh_cells();
+    return x_indicator_;
+  }
+  // The device path, or nullptr on the CPU backend.
+  DeviceStepper* device() { return device_.get(); }
+  // The device path only: `steps` fluid updates without the cells (benchmarks, tests).
+  void device_fluid_steps(int steps);
   const std::vector<Triangle>& triangles() const { return membrane_->reference().triangles; }
   const TriangleMesh& reference_mesh() const { return membrane_->reference(); }
   Vec3 box_centre() const;
@@ -97,21 +121,29 @@ class ShearFlowSimulation {
   void update_viscosity();
   void rebuild_viscosity();  // from x_indicator_
   void move_cells(double dt);
+  // On the device path, copy its state back where the host's copy is out of date.
+  void refresh_cells() const;
+  void refresh_fluid() const;
+  DeviceHostState host_state() const;
 
   SimulationCase case_;
   LatticeUnits units_;
-  FluidLattice fluid_;
+  // The state. On the device path these are the host's copy of the device's state,
+  // refreshed when read (hence mutable).
+  mutable FluidLattice fluid_;
   std::unique_ptr<CellMembrane> membrane_;
   InsideFraction inside_;
-  std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
-  std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
+  mutable std::vector<std::vector<Vec3>> x_, v_, f_;  // per cell: positions, velocities, membrane forces
+  mutable std::vector<std::vector<Vec3>> x_indicator_;  // positions of the last inside-fraction build
   // Fluid velocity at every lattice node (x, y, z components, node_count() each), written
   // by the fluid steps before a membrane update: one evaluation of the moments per node
   // instead of one per stencil visit. Under the interval mean it holds the sum over the
   // u_field_steps_ fluid steps of the interval so far.
-  std::vector<double> u_field_;
-  int u_field_steps_ = 0;
-  StepTimings timings_;
+  mutable std::vector<double> u_field_;
+  mutable int u_field_steps_ = 0;
+  mutable StepTimings timings_;
+  std::unique_ptr<DeviceStepper> device_;
+  mutable bool cells_stale_ = false, fluid_stale_ = false;
   NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
 };
 

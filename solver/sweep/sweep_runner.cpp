@@ -115,6 +115,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
     ro.resume = true;
     ro.progress = opt.progress;
     ro.progress_seconds = opt.progress_seconds;
+    ro.backend = opt.backend;
     const auto t0 = std::chrono::steady_clock::now();
     nlohmann::json result;
     try {

@@ -14,6 +14,8 @@
 #include <iosfwd>
 #include <string>
 
+#include "solver/device/device_stepper.hpp"
+
 #include "solver/sweep/sweep_plan.hpp"
 
 namespace rbcal::solver {
@@ -26,6 +28,7 @@ struct SweepOptions {
   bool retry_failed = false;          // run cases recorded in failed/ again
   std::ostream* progress = nullptr;   // per-case lines and the solver's progress
   double progress_seconds = 60.0;     // between the solver's progress lines
+  Backend backend = Backend::Cpu;     // Device: each case on the device path (a GPU host)
 };
 
 struct SweepSummary {
