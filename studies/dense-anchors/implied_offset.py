@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""The immersed-boundary offset c at which the shipped family reproduces each finished anchor.
+
+A run at N_a 12 seeded at phi_actual stands for the continuum at g_c(12) phi_actual; the
+family's member at offset c predicts eta_re there (8a gap) and, with the box correction beta,
+in a bulk suspension. The c that makes the prediction equal the run is found by scanning the
+family's range 0.45-1.05 and interpolating linearly. Usage, from the repository root:
+  python3 studies/dense-anchors/implied_offset.py [RBCAL]
+"""
+import json
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+import subprocess
+
+rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
+family = os.path.join(ROOT, "data", "library", "default", "surrogate_family.json")
+box = json.load(open(family)).get("box_correction", {})
+beta = box.get("mean", 0.102)
+
+# Steiner's thickened volume of the 1280-triangle Evans-Fung mesh at radius 1 (S, V, M),
+# as in blind_predictions.py.
+S, V, M = 8.716, 1.5605, 10.680
+
+
+def g(c, n_a):
+    d = c / n_a
+    return 1.0 + (S * d + M * d * d + 4.0 * math.pi * d ** 3 / 3.0) / V
+
+
+def member(phi, ca, lam, c):
+    out = subprocess.run([rbcal, "surrogate", "predict", family, "--phi", repr(phi), "--ca", repr(ca), "--lambda",
+                          repr(lam), "--offset", repr(c)], capture_output=True, text=True, check=True).stdout
+    for line in out.splitlines():
+        if line.strip().startswith("eta_re "):
+            return float(line.split()[1])
+    raise RuntimeError(out)
+
+
+def crossing(offsets, values, target):
+    for (c0, v0), (c1, v1) in zip(zip(offsets, values), zip(offsets[1:], values[1:])):
+        if (v0 - target) * (v1 - target) <= 0.0 and v1 != v0:
+            return c0 + (target - v0) * (c1 - c0) / (v1 - v0)
+    return float("nan")
+
+
+offsets = [0.45 + 0.05 * k for k in range(13)]
+print("| anchor | eta_re run | member at 0.45 / 0.75 / 1.05 | c (8a gap) | c (bulk, beta %.3f) |" % beta)
+print("|---|---|---|---|---|")
+results = os.path.join(ROOT, "data", "library", "anchors", "results")
+for name in sorted(os.listdir(results)):
+    if not name.endswith(".result.json"):
+        continue
+    j = json.load(open(os.path.join(results, name)))
+    p, r = j["params"], j["result"]
+    n_a = j["numerics"]["N_a"]
+    phi_actual = r["phi_actual"]
+    values = [member(g(c, n_a) * phi_actual, p["Ca"], p["lambda"], c) for c in offsets]
+    bulk = [math.exp((1.0 + beta) * math.log(v)) for v in values]
+    def shown(curve):  # the crossing, or beyond which end of the family's range
+        c = crossing(offsets, curve, r["eta_re"])
+        if not math.isnan(c):
+            return f"{c:.3f}"
+        return "> 1.05" if r["eta_re"] < min(curve) else "< 0.45"
+    print(f"| {name[:-12]} | {r['eta_re']:.3f} +- {r['eta_re_sem']:.3f} | {values[0]:.3f} / {values[6]:.3f} / "
+          f"{values[-1]:.3f} | {shown(values)} | {shown(bulk)} |")
