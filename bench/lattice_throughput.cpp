@@ -7,8 +7,9 @@
 
 namespace rbcal::bench {
 
-LatticeThroughput::LatticeThroughput(std::array<int, 3> box) {
+LatticeThroughput::LatticeThroughput(std::array<int, 3> box, bool single_precision) {
   solver::FluidConfig cfg;
+  cfg.single_precision = single_precision;
   cfg.nx = box[0];
   cfg.ny = box[1];
   cfg.nz = box[2];

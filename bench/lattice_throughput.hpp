@@ -12,7 +12,8 @@ namespace rbcal::bench {
 
 class LatticeThroughput {
  public:
-  explicit LatticeThroughput(std::array<int, 3> box);
+  // single_precision: populations stored in 32 bits (FluidConfig::single_precision).
+  explicit LatticeThroughput(std::array<int, 3> box, bool single_precision = false);
   ~LatticeThroughput();
 
   // Seconds for `steps` time steps.
@@ -21,6 +22,8 @@ class LatticeThroughput {
   // Bytes each node update must move to and from memory at minimum: 19 populations
   // read and 19 written (8 B each), the viscosity (8 B) and the force (24 B) read.
   static constexpr double bytes_per_update = 19 * 8 * 2 + 8 + 24;
+  // The same with the populations in 4 bytes.
+  static constexpr double bytes_per_update_single = 19 * 4 * 2 + 8 + 24;
 
  private:
   std::unique_ptr<solver::FluidLattice> fluid_;

@@ -10,7 +10,7 @@ namespace rbcal::bench {
 
 RooflineResult measure_roofline(const RooflineSettings& settings) {
   StreamTriad triad(settings.triad_elements);
-  LatticeThroughput lattice(settings.box);
+  LatticeThroughput lattice(settings.box, settings.single_precision);
   triad.run_once(false);  // warm-up
   triad.run_once(true);
 
@@ -21,7 +21,9 @@ RooflineResult measure_roofline(const RooflineSettings& settings) {
     r.triad_bytes_per_s.push_back(triad.bytes_counted() / triad.run_once(false));
     r.triad_streaming_bytes_per_s.push_back(triad.bytes_counted() / triad.run_once(true));
     r.lattice_updates_per_s.push_back(lattice.nodes() * settings.steps / lattice.run_once(settings.steps));
-    const double lattice_bytes = r.lattice_updates_per_s.back() * LatticeThroughput::bytes_per_update;
+    const double lattice_bytes =
+        r.lattice_updates_per_s.back() * (settings.single_precision ? LatticeThroughput::bytes_per_update_single
+                                                                     : LatticeThroughput::bytes_per_update);
     ratio.push_back(lattice_bytes / r.triad_bytes_per_s.back());
     ratio_streaming.push_back(lattice_bytes / r.triad_streaming_bytes_per_s.back());
   }

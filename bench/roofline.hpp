@@ -12,6 +12,7 @@ struct RooflineSettings {
   std::array<int, 3> box = {256, 160, 256};  // the seed study's box at N_a = 16
   int steps = 5;                             // lattice steps per round
   int rounds = 7;
+  bool single_precision = false;  // populations stored in 32 bits
   std::size_t triad_elements = std::size_t{128} << 20;  // 1 GiB per array
 };
 

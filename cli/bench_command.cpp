@@ -33,6 +33,7 @@ struct BenchOptions {
   std::string case_path;  // case mode: time the parts of a coupled step
   int case_steps = 20;
   std::string backend = "cpu";
+  std::string precision = "double";
 };
 
 void run_case_bench(const BenchOptions& o) {
@@ -62,9 +63,11 @@ void run_bench(const BenchOptions& o) {
   settings.box = {o.box[0], o.box[1], o.box[2]};
   settings.steps = o.steps;
   settings.rounds = o.rounds;
+  settings.single_precision = o.precision == "float";
   settings.triad_elements = static_cast<std::size_t>(o.triad_mib * 1024.0 * 1024.0 / 8.0);
   const bench::RooflineResult r = bench::measure_roofline(settings);
-  const double bytes_per_update = bench::LatticeThroughput::bytes_per_update;
+  const double bytes_per_update = settings.single_precision ? bench::LatticeThroughput::bytes_per_update_single
+                                                           : bench::LatticeThroughput::bytes_per_update;
 
   std::printf("rbcal bench (rbcal %s, %s build, %d threads, host %s)\n", build_info::git_revision,
               build_info::build_type, r.threads, formats::host_name().c_str());
@@ -72,8 +75,8 @@ void run_bench(const BenchOptions& o) {
   std::printf("  STREAM triad (3 x %.0f MiB)      %8.2f GB/s  ordinary stores, 24 B/element counted\n",
               o.triad_mib, r.median_triad * 1e-9);
   std::printf("  STREAM triad, streaming stores  %8.2f GB/s\n", r.median_triad_streaming * 1e-9);
-  std::printf("  lattice update                  %8.2f MLUPS %d x %d x %d, D3Q19 TRT, variable viscosity, Guo force\n",
-              r.median_updates * 1e-6, o.box[0], o.box[1], o.box[2]);
+  std::printf("  lattice update                  %8.2f MLUPS %d x %d x %d, D3Q19 TRT, variable viscosity, Guo force, %s populations\n",
+              r.median_updates * 1e-6, o.box[0], o.box[1], o.box[2], o.precision.c_str());
   std::printf("                                  %8.2f GB/s  at %.0f B/update\n",
               r.median_updates * bytes_per_update * 1e-9, bytes_per_update);
   const long l3 = sysconf(_SC_LEVEL3_CACHE_SIZE);
@@ -95,6 +98,7 @@ void run_bench(const BenchOptions& o) {
     j["triad_streaming_bytes_per_s"] = r.triad_streaming_bytes_per_s;
     j["lattice_updates_per_s"] = r.lattice_updates_per_s;
     j["bytes_per_update"] = bytes_per_update;
+    j["precision"] = o.precision;
     j["roofline_fraction"] = r.fraction_of_triad;
     j["roofline_fraction_streaming_triad"] = r.fraction_of_streaming_triad;
     formats::write_json_atomically(o.json_path, j);
@@ -124,6 +128,10 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--case-steps", opts->case_steps, "Case mode: timed steps (after 2 warm-up steps)")
       ->capture_default_str();
   add_backend_option(cmd, opts->backend);
+  cmd->add_option("--precision", opts->precision,
+                  "Population storage of the lattice update: double, or float (32 bits, shifted; numerics.precision)")
+      ->check(CLI::IsMember({"double", "float"}))
+      ->capture_default_str();
   cmd->callback([opts] {
     if (opts->backend == "device" && opts->case_path.empty())
       throw CLI::ValidationError("--backend device", "times a case: give --case FILE");

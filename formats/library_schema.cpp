@@ -26,6 +26,7 @@ const std::vector<SignatureField>& numerics_signature_fields() {
       // after its last fluid step (at k = 1 the field does not matter: compared as null).
       {"numerics.node_velocity", json("last_step")},
       {"numerics.volume_stiffness", json(0.0)},
+      {"numerics.precision", json("double")},  // population storage (fluid_lattice.hpp)
       {"cells.triangles", std::nullopt},
       {"cells.shape", std::nullopt},
       {"cells.law", std::nullopt},

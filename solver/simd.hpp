@@ -46,6 +46,37 @@ inline void store_streaming(double* p, vdouble v) {
 #endif
 }
 
+// Floats in the same lanes as vdouble (single-precision storage): loaded widened to double,
+// stored narrowed from it.
+using vfloat = float __attribute__((vector_size(width * sizeof(float))));
+
+inline vdouble load(const float* p) {
+  vfloat v;
+  std::memcpy(&v, p, sizeof v);
+  return __builtin_convertvector(v, vdouble);
+}
+
+inline void store(float* p, vdouble v) {
+  const vfloat f = __builtin_convertvector(v, vfloat);
+  std::memcpy(p, &f, sizeof f);
+}
+
+// One cache line of floats (16, 64-byte aligned at p and at line) with non-temporal
+// stores. Lines written whole: partial lines of many streams overflow the write-combining
+// buffers, and each half-written line then costs a read and a write.
+inline void store_line_streaming(float* p, const float* line) {
+#if defined(__AVX512F__)
+  _mm512_stream_ps(p, _mm512_load_ps(line));
+#elif defined(__AVX__)
+  _mm256_stream_ps(p, _mm256_load_ps(line));
+  _mm256_stream_ps(p + 8, _mm256_load_ps(line + 8));
+#elif defined(__SSE2__)
+  for (int i = 0; i < 16; i += 4) _mm_stream_ps(p + i, _mm_load_ps(line + i));
+#else
+  std::memcpy(p, line, 16 * sizeof(float));
+#endif
+}
+
 inline void store_fence() {
 #if defined(__SSE2__)
   _mm_sfence();

@@ -81,6 +81,8 @@ struct DeviceStepper::Impl {
 DeviceStepper::DeviceStepper(const SimulationCase& c, const LatticeUnits& u, const CellMembrane& membrane,
                              std::size_t cells)
     : impl_(std::make_unique<Impl>()) {
+  if (c.single_precision)
+    throw std::invalid_argument("numerics.precision \"float\" is not on the device path yet: run it with --backend cpu");
   Impl& m = *impl_;
   m.lattice = {u.nx, u.ny, u.nz, static_cast<std::size_t>(u.nx) * u.ny * u.nz};
   m.u_bottom = c.quiescent ? 0.0 : -u.wall_speed;

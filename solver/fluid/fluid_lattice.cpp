@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "solver/fluid/d3q19.hpp"
@@ -21,8 +22,11 @@ namespace {
 // (docs/performance.md, "Software prefetch"). 32 and 64 tie, 96 and more are slower.
 constexpr int prefetch_ahead = 64;
 
+// Floats in a 64-byte cache line (the rows of float storage are whole lines).
+constexpr int kFloatsPerLine = 16;
+
 // Read, keep in all cache levels (locality 3: a non-temporal hint was 30 % slower).
-inline void prefetch(const double* p) { __builtin_prefetch(p, 0, 3); }
+inline void prefetch(const void* p) { __builtin_prefetch(p, 0, 3); }
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("FluidLattice: " + what);
@@ -54,8 +58,21 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
   // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md).
   stride_ = staggered(static_cast<std::size_t>(config.nx) * config.ny * row_length_, 3);
-  f_.resize(Q * stride_);  // zeros: the padding lanes start finite (they never feed a node)
-  f_next_.resize(Q * stride_);
+  if (config.single_precision) {
+    // Float rows of whole cache lines (16 floats), so that the update streams whole lines;
+    // the same staggering in bytes (1024 floats to 4 KiB, 16 to a line).
+    row_length_ = (static_cast<std::size_t>(config.nz) + kFloatsPerLine - 1) / kFloatsPerLine * kFloatsPerLine;
+    const std::size_t n = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
+    stride_ = (n + 1023) / 1024 * 1024 + 3 * kFloatsPerLine;
+  }
+  // Zeros: the padding lanes start finite (they never feed a node).
+  if (config.single_precision) {
+    h_.resize(Q * stride_);
+    h_next_.resize(Q * stride_);
+  } else {
+    f_.resize(Q * stride_);
+    f_next_.resize(Q * stride_);
+  }
   // One vector of slack after the per-node fields: the last chunk of the last row loads a
   // full vector of them (lanes past the row are padding and are not used).
   viscosity_.assign(nodes_ + simd::width, config.viscosity);
@@ -76,11 +93,18 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
   double feq[Q];
   equilibrium(rho, ux + force(0)[node] * half_over_rho, uy + force(1)[node] * half_over_rho,
               uz + force(2)[node] * half_over_rho, feq);
-  for (int q = 0; q < Q; ++q) f_[q * stride_ + padded(node)] = feq[q];
+  for (int q = 0; q < Q; ++q) store(q, padded(node), feq[q]);
 }
 
-void FluidLattice::update_row(int x, int y, double* const velocity_out[3], bool accumulate) {
+double FluidLattice::rest(int q) { return w[q]; }
+
+template <class T>
+void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const velocity_out[3], bool accumulate) {
   using simd::vdouble;
+  // Float storage holds f_q - w_q: the shift is added on loading, taken off on storing.
+  constexpr bool shifted = std::is_same_v<T, float>;
+  // The same bytes ahead as for doubles.
+  constexpr int ahead = prefetch_ahead;
   constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
   const bool walls = config_.y_boundary == WallNormalBoundary::MovingWalls;
@@ -88,35 +112,39 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3], bool 
   const std::size_t prow = padded_row(x, y);  // in the population arrays
 
   // Node z of this row pulls population q from src[q][z - shift[q]] + add[q].
-  const double* src[Q];
+  const T* src[Q];
   int shift[Q];
   double add[Q];
-  double* out[Q];
+  T* out[Q];
   for (int q = 0; q < Q; ++q) {
-    out[q] = f_next_.data() + q * stride_ + prow;
+    out[q] = next + q * stride_ + prow;
     int ys = y - c[q][1];
     if (walls && (ys < 0 || ys >= ny)) {
       // Half-way bounce-back with the moving-wall term (Ladd 1994):
       // f_q(x, t+1) = f*_qbar(x, t) + 6 w_q (c_q . u_wall).
       const double u_wall = ys < 0 ? config_.wall_velocity_bottom : config_.wall_velocity_top;
-      src[q] = f_.data() + opposite(q) * stride_ + prow;
+      src[q] = cur + opposite(q) * stride_ + prow;
       shift[q] = 0;
-      add[q] = 6.0 * w[q] * c[q][2] * u_wall;
+      add[q] = 6.0 * w[q] * c[q][2] * u_wall + (shifted ? w[q] : 0.0);
     } else {
       ys = (ys + ny) % ny;
       const int xs = (x - c[q][0] + nx) % nx;
-      src[q] = f_.data() + q * stride_ + padded_row(xs, ys);
+      src[q] = cur + q * stride_ + padded_row(xs, ys);
       shift[q] = c[q][2];
-      add[q] = 0.0;
+      add[q] = shifted ? w[q] : 0.0;
     }
   }
-  const double* in[Q];
+  const T* in[Q];
   for (int q = 0; q < Q; ++q) in[q] = src[q] - shift[q];
 
   const double* nu = viscosity_.data() + row;
   const double* fx = force_.data() + row;
   const double* fy = force_.data() + component_stride_ + row;
   const double* fz = force_.data() + 2 * component_stride_ + row;
+  // Float storage: the narrowed chunks of a cache line are gathered here, then streamed as
+  // whole lines (simd::store_line_streaming).
+  constexpr int chunks_per_line = kFloatsPerLine / W;
+  alignas(64) float stage[shifted ? Q : 1][kFloatsPerLine];
   // Every padded row starts aligned (stride_ and row_length_ are multiples of W).
   using vmask = decltype(vdouble{} < vdouble{});
   vdouble lane_index;
@@ -140,12 +168,12 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3], bool 
         alignas(simd::bytes) double lanes[W];
         std::copy(src[q] + z0 + 1, src[q] + z0 + real, lanes);
         lanes[real - 1] = src[q][0];
-        std::fill(lanes + real, lanes + W, w[q]);
+        std::fill(lanes + real, lanes + W, shifted ? 0.0 : w[q]);  // stored fluid at rest
         f[q] = simd::load(lanes) + add[q];
       } else {
         f[q] = simd::load(in[q] + z0) + add[q];
       }
-      prefetch(in[q] + z0 + prefetch_ahead);
+      prefetch(in[q] + z0 + ahead);
     }
     for (const double* p : {nu, fx, fy, fz}) prefetch(p + z0 + prefetch_ahead);
     nu_v = simd::load(nu + z0);
@@ -171,8 +199,19 @@ void FluidLattice::update_row(int x, int y, double* const velocity_out[3], bool 
           for (int l = 0; z0 + l < nz; ++l) out_u[l] = accumulate ? out_u[l] + u[d][l] : u[d][l];
       }
     }
-    // Whole vectors into the padded, aligned rows (the padding lanes included).
-    for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
+    if constexpr (shifted) {
+      const int k = (z0 / W) % chunks_per_line;
+      for (int q = 0; q < Q; ++q) simd::store(stage[q] + k * W, f[q] - w[q]);
+      const int line_start = z0 - k * W;
+      if (k == chunks_per_line - 1) {
+        for (int q = 0; q < Q; ++q) simd::store_line_streaming(out[q] + line_start, stage[q]);
+      } else if (last) {  // the row ends inside this line: its chunks so far, ordinary stores
+        for (int q = 0; q < Q; ++q) std::copy(stage[q], stage[q] + (k + 1) * W, out[q] + line_start);
+      }
+    } else {
+      // Whole vectors into the padded, aligned rows (the padding lanes included).
+      for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
+    }
   }
 }
 
@@ -184,10 +223,14 @@ void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
   {
 #pragma omp for collapse(2) schedule(static) nowait
     for (int x = 0; x < nx; ++x)
-      for (int y = 0; y < ny; ++y) update_row(x, y, velocity_out, accumulate);
+      for (int y = 0; y < ny; ++y) {
+        if (config_.single_precision) update_row(h_.data(), h_next_.data(), x, y, velocity_out, accumulate);
+        else update_row(f_.data(), f_next_.data(), x, y, velocity_out, accumulate);
+      }
     simd::store_fence();  // streaming stores visible before the barrier
   }
   f_.swap(f_next_);
+  h_.swap(h_next_);
   ++steps_;
 }
 
@@ -195,7 +238,7 @@ std::vector<double> FluidLattice::populations() const {
   const std::size_t packed = whole_vectors(nodes_);
   std::vector<double> out(Q * packed, 0.0);
   for (int q = 0; q < Q; ++q)
-    for (std::size_t n = 0; n < nodes_; ++n) out[q * packed + n] = f_[q * stride_ + padded(n)];
+    for (std::size_t n = 0; n < nodes_; ++n) out[q * packed + n] = stored(q, padded(n));
   return out;
 }
 
@@ -204,14 +247,14 @@ void FluidLattice::restore(const std::vector<double>& populations, std::int64_t 
   require(populations.size() == Q * packed, "checkpoint holds " + std::to_string(populations.size()) +
                                                 " populations, the lattice needs " + std::to_string(Q * packed));
   for (int q = 0; q < Q; ++q)
-    for (std::size_t n = 0; n < nodes_; ++n) f_[q * stride_ + padded(n)] = populations[q * packed + n];
+    for (std::size_t n = 0; n < nodes_; ++n) store(q, padded(n), populations[q * packed + n]);
   steps_ = steps;
 }
 
 NodeMoments FluidLattice::moments(std::size_t node) const {
   double rho = 0.0, jx = 0.0, jy = 0.0, jz = 0.0;
   for (int q = 0; q < Q; ++q) {
-    const double fq = f_[q * stride_ + padded(node)];
+    const double fq = stored(q, padded(node));
     rho += fq;
     jx += fq * c[q][0];
     jy += fq * c[q][1];
@@ -224,10 +267,9 @@ NodeMoments FluidLattice::moments(std::size_t node) const {
 double FluidLattice::total_mass() const {
   double mass = 0.0;
   for (int q = 0; q < Q; ++q) {
-    const double* fq = f_.data() + q * stride_;
     const long n = static_cast<long>(nodes_);
 #pragma omp parallel for reduction(+ : mass) schedule(static)
-    for (long i = 0; i < n; ++i) mass += fq[padded(static_cast<std::size_t>(i))];
+    for (long i = 0; i < n; ++i) mass += stored(q, padded(static_cast<std::size_t>(i)));
   }
   return mass;
 }
@@ -243,8 +285,8 @@ WallTraction FluidLattice::wall_traction() const {
       const double correction = 6.0 * w[q] * c[q][2] * u_wall;
       double exchanged = 0.0;
       for (int x = 0; x < config_.nx; ++x) {
-        const double* fq = f_.data() + q * stride_ + padded_row(x, y);
-        for (int z = 0; z < config_.nz; ++z) exchanged += 2.0 * fq[z] - correction;
+        const std::size_t row = padded_row(x, y);
+        for (int z = 0; z < config_.nz; ++z) exchanged += 2.0 * stored(q, row + z) - correction;
       }
       for (int d = 0; d < 3; ++d) sum[d] += c[q][d] * exchanged;
     }

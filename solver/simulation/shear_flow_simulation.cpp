@@ -16,7 +16,7 @@ namespace rbcal::solver {
 
 namespace {
 
-FluidConfig fluid_config(const LatticeUnits& u, bool quiescent) {
+FluidConfig fluid_config(const LatticeUnits& u, bool quiescent, bool single_precision) {
   FluidConfig f;
   f.nx = u.nx;
   f.ny = u.ny;
@@ -24,6 +24,7 @@ FluidConfig fluid_config(const LatticeUnits& u, bool quiescent) {
   f.viscosity = u.nu_out;
   f.wall_velocity_bottom = quiescent ? 0.0 : -u.wall_speed;
   f.wall_velocity_top = quiescent ? 0.0 : u.wall_speed;
+  f.single_precision = single_precision;
   return f;
 }
 
@@ -32,7 +33,7 @@ FluidConfig fluid_config(const LatticeUnits& u, bool quiescent) {
 ShearFlowSimulation::ShearFlowSimulation(const SimulationCase& c, Backend backend)
     : case_(c),
       units_(derive_lattice_units(c.flow, c.resolution)),
-      fluid_(fluid_config(units_, c.quiescent)),
+      fluid_(fluid_config(units_, c.quiescent, c.single_precision)),
       inside_(units_.nx, units_.ny, units_.nz) {
   const double a = c.resolution.nodes_per_radius;  // the radius in lattice units
   CellMembraneSettings ms;

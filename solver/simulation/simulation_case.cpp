@@ -56,6 +56,7 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   every_field.coupling_interval = 2;  // so that node_velocity is written
   every_field.shape = CellShape::Spheroid;  // so that aspect_ratio is written
   every_field.overlap_allowed = true;
+  every_field.single_precision = true;  // so that precision is written
   const nlohmann::json known = case_to_json(every_field);
   for (const char* section : {"params", "cells", "numerics", "run"}) {
     std::vector<std::string> keys;
@@ -132,6 +133,9 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   if (node_velocity != "interval_mean" && node_velocity != "last_step")
     r.fail("numerics.node_velocity", "must be \"interval_mean\" or \"last_step\"");
   c.node_velocity = node_velocity == "interval_mean" ? NodeVelocity::IntervalMean : NodeVelocity::LastStep;
+  const std::string precision = r.text_or("numerics.precision", "double");
+  if (precision != "double" && precision != "float") r.fail("numerics.precision", "must be \"double\" or \"float\"");
+  c.single_precision = precision == "float";
   c.volume_stiffness = r.number_or("numerics.volume_stiffness", c.volume_stiffness, 0.0, 1e9);
   c.seed = static_cast<std::uint64_t>(r.number_or("numerics.seed", 1.0, 0.0, 9.0e15));
 
@@ -198,6 +202,8 @@ nlohmann::json case_to_json(const SimulationCase& c) {
   // With one fluid step per membrane step both node velocities are the same: the field is
   // written only where it matters (so k = 1 cases read the same before and after it existed).
   if (c.coupling_interval > 1) j["numerics"]["node_velocity"] = to_string(c.node_velocity);
+  // Written only for "float", so that double cases read the same as before it existed.
+  if (c.single_precision) j["numerics"]["precision"] = "float";
   j["run"] = {{"strain_end", c.strain_end},
               {"window", c.window},
               {"record_interval", c.record_interval},

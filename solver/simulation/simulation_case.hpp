@@ -72,6 +72,9 @@ struct SimulationCase {
   // stable: the bench case runs at k = 2 with it and blows up with the last step's
   // (docs/performance.md, "The interval's mean velocity"). At k = 1 the two are the same.
   NodeVelocity node_velocity = NodeVelocity::IntervalMean;
+  // numerics.precision: "float" stores the populations in 32 bits, shifted by their rest
+  // values, with the arithmetic in 64 bits (fluid_lattice.hpp); "double" (the default).
+  bool single_precision = false;
   double volume_stiffness = 0.0;  // k_v in G_s / a of an optional volume penalty force
   std::uint64_t seed = 1;
   // run

@@ -137,5 +137,13 @@ TEST(DevicePath, CheckpointContinuesTheRun) {
   std::filesystem::remove(path);
 }
 
+// Float population storage is a CPU-path option: the device path refuses it rather than
+// running the case in double.
+TEST(DevicePath, RefusesFloatStorage) {
+  SimulationCase c = test_cases::small_sheared_case(MembraneLaw::Skalak);
+  c.single_precision = true;
+  EXPECT_THROW(ShearFlowSimulation(c, Backend::Device), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace rbcal::solver
