@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench/coupled_step.hpp"
+#include "bench/host_description.hpp"
 #include "bench/lattice_throughput.hpp"
 #include "bench/roofline.hpp"
 #include "cli/backend_option.hpp"
@@ -39,8 +40,9 @@ struct BenchOptions {
 void run_case_bench(const BenchOptions& o) {
   const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps,
                                                                backend_from_option(o.backend));
-  std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n%s", o.case_path.c_str(), build_info::git_revision,
-              omp_get_max_threads(), formats::host_name().c_str(), t.brief_report().c_str());
+  std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n  %s\n%s", o.case_path.c_str(),
+              build_info::git_revision, omp_get_max_threads(), formats::host_name().c_str(),
+              bench::describe_host().line().c_str(), t.brief_report().c_str());
   if (!o.json_path.empty()) {
     nlohmann::json j = {{"case", o.case_path}, {"provenance", formats::provenance_block()}, {"threads", omp_get_max_threads()}};
     j.update(t.to_json());
@@ -71,6 +73,7 @@ void run_bench(const BenchOptions& o) {
 
   std::printf("rbcal bench (rbcal %s, %s build, %d threads, host %s)\n", build_info::git_revision,
               build_info::build_type, r.threads, formats::host_name().c_str());
+  std::printf("  %s\n", bench::describe_host().line().c_str());
   std::printf("  %d alternating rounds; medians over rounds\n", o.rounds);
   std::printf("  STREAM triad (3 x %.0f MiB)      %8.2f GB/s  ordinary stores, 24 B/element counted\n",
               o.triad_mib, r.median_triad * 1e-9);
@@ -99,6 +102,11 @@ void run_bench(const BenchOptions& o) {
     j["lattice_updates_per_s"] = r.lattice_updates_per_s;
     j["bytes_per_update"] = bytes_per_update;
     j["precision"] = o.precision;
+    const bench::HostDescription host = bench::describe_host();
+    j["cpu_model"] = host.cpu_model;
+    j["vector_doubles"] = host.vector_doubles;
+    j["transparent_huge_pages"] = host.huge_pages;
+    j["page_bytes"] = host.page_bytes;
     j["roofline_fraction"] = r.fraction_of_triad;
     j["roofline_fraction_streaming_triad"] = r.fraction_of_streaming_triad;
     formats::write_json_atomically(o.json_path, j);
