@@ -29,6 +29,7 @@
 #include "solver/simulation/block_average.hpp"
 #include "solver/membrane/mesh_health.hpp"
 #include "solver/simulation/cell_overlap.hpp"
+#include "solver/simulation/coupling_stability.hpp"
 #include "solver/simulation/memory_estimate.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
@@ -207,6 +208,9 @@ class CaseRun {
     const LatticeUnits& u = sim_.units();
     *opt_.progress << "  " << sim_.positions().size() << " cells, phi = " << phi_actual() << ", lattice " << u.nx
                    << " x " << u.ny << " x " << u.nz << ", " << total_steps_ << " steps\n";
+    if (c_.coupling_interval_chosen)
+      *opt_.progress << "  coupling interval " << c_.coupling_interval << " (auto: K_s,lu (sum phi^2)^3 = "
+                     << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
   }
 
   // Restores the checkpoint and returns the series rows up to it (later ones are recomputed),

@@ -10,6 +10,7 @@
 #include "formats/library_schema.hpp"
 #include "solver/lattice_units.hpp"
 #include "solver/simulation/cell_overlap.hpp"
+#include "solver/simulation/coupling_stability.hpp"
 
 namespace rbcal::solver {
 
@@ -128,7 +129,13 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
   if (integrator != "rk4" && integrator != "euler") r.fail("numerics.integrator", "must be \"rk4\" or \"euler\"");
   c.integrator = integrator == "euler" ? Integrator::Euler : Integrator::RK4;
   c.indicator_tolerance = r.number_or("numerics.indicator_tolerance", c.indicator_tolerance, 0.0, 1.0);
-  c.coupling_interval = r.integer_or("numerics.coupling_interval", c.coupling_interval, 1, 1000);
+  // "auto" (or absent): the largest interval up to 2 that the coupling's stability bound
+  // allows (coupling_stability.hpp), chosen once the case is read.
+  const nlohmann::json* interval = r.find("numerics.coupling_interval");
+  const bool auto_interval = !interval || (interval->is_string() && *interval == "auto");
+  if (interval && interval->is_string() && !auto_interval)
+    r.fail("numerics.coupling_interval", "must be a whole number of fluid steps or \"auto\"");
+  if (!auto_interval) c.coupling_interval = r.integer_or("numerics.coupling_interval", c.coupling_interval, 1, 1000);
   const std::string node_velocity = r.text_or("numerics.node_velocity", to_string(c.node_velocity));
   if (node_velocity != "interval_mean" && node_velocity != "last_step")
     r.fail("numerics.node_velocity", "must be \"interval_mean\" or \"last_step\"");
@@ -169,6 +176,10 @@ SimulationCase case_from_json(const nlohmann::json& j, const std::string& source
     derive_lattice_units(c.flow, c.resolution);
   } catch (const std::invalid_argument& e) {
     r.fail("numerics", e.what());
+  }
+  if (auto_interval) {
+    c.coupling_interval = stable_coupling_interval(c);
+    c.coupling_interval_chosen = true;
   }
   return c;
 }

@@ -66,8 +66,10 @@ struct SimulationCase {
   // Fluid steps per membrane step (forces, spreading, inside fraction, node update).
   // 2 (with the interval mean below) changed eta_re of two dense cases by 0.17 standard
   // errors and halves the membrane's cost; it halves the stiffness the explicit coupling
-  // takes too, so very stiff cases (G_s (1 + 2C) in lattice units above about 1.4) need 1.
+  // takes too, so very stiff cases need 1. A case file's "auto" (or no value) takes 2 where
+  // the stability bound allows it and 1 elsewhere (coupling_stability.hpp).
   int coupling_interval = 2;
+  bool coupling_interval_chosen = false;  // set by "auto" (not written back: the number is)
   // Over an interval the mean velocity is both closer to the fluid's motion and more
   // stable: the bench case runs at k = 2 with it and blows up with the last step's
   // (docs/performance.md, "The interval's mean velocity"). At k = 1 the two are the same.
