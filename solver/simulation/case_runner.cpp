@@ -208,7 +208,7 @@ class CaseRun {
     const LatticeUnits& u = sim_.units();
     *opt_.progress << "  " << sim_.positions().size() << " cells, phi = " << phi_actual() << ", lattice " << u.nx
                    << " x " << u.ny << " x " << u.nz << ", " << total_steps_ << " steps\n";
-    if (c_.coupling_interval_chosen)
+    if (c_.coupling_interval_chosen && opt_.coupling_interval == 0)
       *opt_.progress << "  coupling interval " << c_.coupling_interval << " (auto: K_s,lu (sum phi^2)^3 = "
                      << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
   }
