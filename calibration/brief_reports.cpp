@@ -6,12 +6,12 @@
 #include <string>
 
 #include "calibration/calibration_report.hpp"
+#include "calibration/units.hpp"
 
 namespace rbcal::calibration {
 
 namespace {
 
-constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 template <class... Args>

@@ -20,6 +20,7 @@
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
+#include "calibration/units.hpp"
 #include "formats/short_number.hpp"
 #include "surrogate/fixed_nuisance_model.hpp"
 #include "surrogate/offset_family_file.hpp"
@@ -59,7 +60,7 @@ std::optional<std::string> extrapolation_warning(const std::string& method, cons
   const double ca = capillary_number_span(points, plasma_viscosity, cell_radius, lower_shear_modulus).second;
   if (!(ca > range.ca_max * (1.0 + 1e-9))) return std::nullopt;
   std::ostringstream w;
-  w << method << ": at the lower end of the G_s interval (" << shown(lower_shear_modulus * 1e6)
+  w << method << ": at the lower end of the G_s interval (" << shown(lower_shear_modulus * kMicro)
     << " uN/m) the fitted points reach Ca " << shown(ca) << ", beyond the library's " << shown(range.ca_max)
     << ": there the surrogate extrapolates, and that end of the interval rests on its extrapolation";
   return w.str();
@@ -76,7 +77,7 @@ std::vector<std::string> range_cut_warnings(const std::vector<RelativeViscosityP
   const double low = capillary_number_span(points, plasma_viscosity, cell_radius, interval.upper).first;
   const auto say = [&](const char* end, double g_s, double ca, double edge, const char* which, const char* kind) {
     std::ostringstream w;
-    w << "MCMC: the " << end << " end of the G_s interval (" << shown(g_s * 1e6) << " uN/m) puts the fitted points at Ca "
+    w << "MCMC: the " << end << " end of the G_s interval (" << shown(g_s * kMicro) << " uN/m) puts the fitted points at Ca "
       << shown(ca) << ", at the library's " << which << " Ca " << shown(edge)
       << ", where the posterior is cut (the model is not used outside its range): that end is set by the library, "
          "not by the data; read it as a "
@@ -325,7 +326,7 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"fit_lambda", setup.fit_lambda},
           {"lambda_prior_log_sd", setup.lambda_prior_log_sd},
           {"held_nuisances", held_nuisances},
-          {"cell_radius_um", setup.cell_radius * 1e6},
+          {"cell_radius_um", setup.cell_radius * kMicro},
           {"plateau_min_shear_rate_per_s", plasma.plateau_min_shear_rate},
           {"phi_max", phi_max},
           {"min_shear_rate_per_s", min_shear_rate},

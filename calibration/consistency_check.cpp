@@ -5,12 +5,12 @@
 #include <cstdio>
 
 #include "calibration/calibration_report.hpp"
+#include "calibration/units.hpp"
 
 namespace rbcal::calibration {
 
 namespace {
 
-constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kZ95 = 1.959963984540054;
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {

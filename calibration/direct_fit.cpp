@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "calibration/joint_likelihood.hpp"
+#include "calibration/units.hpp"
 #include "calibration/viscosity_observation.hpp"
 
 namespace rbcal::calibration {
@@ -401,7 +402,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       what << "no G_s fits the data inside the model's Ca range " << range.ca_min << " to " << range.ca_max
            << ": the best fit carries every point out of it, so G_s is held where the "
            << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range.ca_max : range.ca_min)
-           << "; read G_s = " << std::exp(x.ln_shear_modulus) * 1e6 << " uN/m as an "
+           << "; read G_s = " << std::exp(x.ln_shear_modulus) * kMicro << " uN/m as an "
            << limit_kind(result.model_edge) << " limit, not an estimate (the data lie "
            << (low_edge ? "below" : "above") << " the model)";
       result.model_edge_reason = what.str();

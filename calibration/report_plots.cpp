@@ -11,6 +11,7 @@
 
 #include "calibration/quantiles.hpp"
 #include "calibration/report_tables.hpp"
+#include "calibration/units.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
@@ -19,7 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 std::string num(double x) { return formats::short_number(x, 9); }

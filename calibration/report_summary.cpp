@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "calibration/units.hpp"
 #include "formats/library_schema.hpp"
 #include "formats/provenance.hpp"
 
@@ -12,7 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 json interval_json(const Interval& i, double scale) { return {{"lower", scale * i.lower}, {"upper", scale * i.upper}, {"level", i.level}}; }
@@ -239,7 +239,7 @@ nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles
                           {"command_line", p.command_line},
                           {"options", p.options},
                           {"seed", p.seed}});
-  j["cell_radius_um"] = report.cell_radius * 1e6;
+  j["cell_radius_um"] = report.cell_radius * kMicro;
   json samples = json::array();
   for (const SampleReport& s : report.samples) samples.push_back(sample_summary(s));
   j["samples"] = samples;

@@ -7,13 +7,13 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "calibration/units.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
 
 namespace {
 
-constexpr double kMicro = 1e6;  // N/m -> uN/m
 constexpr double kMilli = 1e3;  // Pa s -> mPa s
 
 // Shortest round-trippable-enough text for a table (9 significant digits); empty for NaN.
