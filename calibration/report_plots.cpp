@@ -261,6 +261,34 @@ void gs_ca_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem
                                  "set ylabel \"G_s [uN/m]\"\nplot " + plot + "\n"});
 }
 
+// (e) posterior-predictive check: each used point's PIT (the share of its predictive draws
+// below the measured value) against shear rate, one colour per phi, with the 95 % band's
+// edges. Points agree with the model where they scatter evenly between the edges.
+void predictive_check_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, int index) {
+  if (!s.predictive_check || s.predictive_check->points.empty()) return;
+  const PredictiveCheck& check = *s.predictive_check;
+  std::map<double, std::vector<std::vector<double>>> by_phi;
+  for (const PredictiveCheckPoint& p : check.points) by_phi[p.point.phi].push_back({p.point.shear_rate, p.pit});
+  const double tail = 0.5 * (1.0 - check.level);
+  std::string plot;
+  int colour = 0;
+  for (auto& [phi, rows] : by_phi) {
+    ++colour;
+    std::sort(rows.begin(), rows.end());
+    plot += b.block("s" + std::to_string(index) + "_ppc" + std::to_string(colour), rows) + " using 1:2 with points lt " +
+            std::to_string(colour) + " pt 7 ps 0.9 title " + quoted("phi = " + num(phi)) + ", \\\n  ";
+  }
+  plot += num(tail) + " with lines lc \"black\" dt 2 title " +
+          quoted("edges of the central " + num(100 * check.level) + " % predictive interval") + ", \\\n  " +
+          num(1.0 - tail) + " with lines lc \"black\" dt 2 notitle";
+  const std::string title = s.sample.name + ": posterior-predictive check, " + std::to_string(check.outside()) + " of " +
+                            std::to_string(check.points.size()) + " points outside (expected " +
+                            short_num(check.expected_outside()) + ")";
+  b.add({stem + "_ppc", header(title) + "set logscale x\nset xlabel \"shear rate [1/s]\"\n"
+                                        "set ylabel \"PIT: share of predictive draws below the measurement\"\n"
+                                        "set yrange [-0.02:1.02]\nplot " + plot + "\n"});
+}
+
 ScriptBuilder build_plots(const CalibrationReport& report, const ReportOptions& options) {
   ScriptBuilder b;
   for (std::size_t i = 0; i < report.samples.size(); ++i) {
@@ -274,6 +302,7 @@ ScriptBuilder build_plots(const CalibrationReport& report, const ReportOptions& 
     posterior_plot(b, s, stem, index, options.histogram_bins);
     alpha_plot(b, s, stem, index, report.cell_radius);
     gs_ca_plot(b, s, stem, index);
+    predictive_check_plot(b, s, stem, index);
   }
   return b;
 }

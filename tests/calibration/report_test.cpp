@@ -189,6 +189,32 @@ TEST_F(ReportTest, SummaryHasTheDocumentedKeysInReportUnits) {
   EXPECT_TRUE(listed.count("fits.csv") && listed.count("summary.json"));
 }
 
+// The posterior-predictive check's plot: each point's PIT against shear rate, its title
+// counting the points outside the band; drawn only for a sample that has the check.
+TEST_F(ReportTest, PredictiveCheckPlotCountsThePointsOutside) {
+  if (find_gnuplot("gnuplot").empty()) GTEST_SKIP() << "gnuplot not installed";
+  CalibrationReport r = *report_;
+  PredictiveCheck check;
+  const double pits[] = {0.01, 0.5, 0.9};
+  for (int k = 0; k < 3; ++k) {
+    PredictiveCheckPoint p;
+    p.point = r.samples[0].sample.points.at(static_cast<std::size_t>(k));
+    p.pit = pits[k];
+    p.outside = p.pit < 0.025 || p.pit > 0.975;
+    check.points.push_back(p);
+  }
+  r.samples[0].predictive_check = check;
+  const fs::path folder = fresh_folder("ppc");
+  const ReportFiles files = write_calibration_report(r, folder);
+  ASSERT_TRUE(files.plots_written) << files.plots_message;
+  std::ifstream v(folder / "intact_ppc.svg");
+  const std::string text((std::istreambuf_iterator<char>(v)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("1 of 3 points outside"), std::string::npos);
+  EXPECT_NE(text.find("PIT"), std::string::npos);
+  EXPECT_TRUE(fs::exists(folder / "intact_ppc.png"));
+  EXPECT_FALSE(fs::exists(folder / "hardened__fixed_ppc.svg")) << "a plot for a sample without the check";
+}
+
 TEST_F(ReportTest, PlotsArePngAndSvgWhenGnuplotIsPresent) {
   if (find_gnuplot("gnuplot").empty()) GTEST_SKIP() << "gnuplot not installed";
   const fs::path folder = fresh_folder("plots");
