@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "calibration/report_html.hpp"
 #include "calibration/report_plots.hpp"
 #include "calibration/report_summary.hpp"
 #include "calibration/report_tables.hpp"
@@ -57,9 +58,13 @@ ReportFiles write_report_files(const CalibrationReport& report, const std::files
     out.plots_message = "plots not requested";
   }
 
+  // The page is listed before the summary is made, so that summary.json names it too.
+  out.files.push_back(folder / "report.html");
   const std::filesystem::path summary = folder / "summary.json";
-  formats::write_json_atomically(summary, report_summary(report, out));
+  const nlohmann::json content = report_summary(report, out);
+  formats::write_json_atomically(summary, content);
   out.files.push_back(summary);
+  write_report_html(content, folder);
   return out;
 }
 

@@ -215,6 +215,25 @@ TEST_F(ReportTest, PredictiveCheckPlotCountsThePointsOutside) {
   EXPECT_FALSE(fs::exists(folder / "hardened__fixed_ppc.svg")) << "a plot for a sample without the check";
 }
 
+// report.html: one self-contained page with each sample's headline, its warnings, the plots
+// inline and the provenance; names are escaped, nothing is fetched from elsewhere.
+TEST_F(ReportTest, HtmlPageHoldsHeadlinesWarningsPlotsAndProvenance) {
+  const fs::path folder = fresh_folder("html");
+  const ReportFiles files = write_calibration_report(*report_, folder);
+  std::ifstream in(folder / "report.html");
+  ASSERT_TRUE(in) << "no report.html";
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  for (const std::string& sample : {"intact", "hardened, fixed"}) EXPECT_NE(page.find("<h2>" + sample + "</h2>"), std::string::npos) << sample;
+  EXPECT_NE(page.find("warning: a test warning"), std::string::npos);
+  EXPECT_NE(page.find("direct fit"), std::string::npos);
+  EXPECT_NE(page.find("<h2>Provenance</h2>"), std::string::npos);
+  EXPECT_EQ(page.find("src=\"http"), std::string::npos) << "the page fetches something";
+  if (files.plots_written) EXPECT_NE(page.find("<svg"), std::string::npos) << "plots written but not inlined";
+  const nlohmann::json summary = nlohmann::json::parse(std::ifstream(folder / "summary.json"));
+  EXPECT_NE(std::find(summary["files"].begin(), summary["files"].end(), "report.html"), summary["files"].end());
+}
+
 TEST_F(ReportTest, PlotsArePngAndSvgWhenGnuplotIsPresent) {
   if (find_gnuplot("gnuplot").empty()) GTEST_SKIP() << "gnuplot not installed";
   const fs::path folder = fresh_folder("plots");
