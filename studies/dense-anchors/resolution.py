@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""The anchors at each resolution side by side, and their extrapolation in N_a.
+
+Each point (phi as run, Ca) is run with the same cells at the same places at N_a 8, 12 and 16
+(data/library/anchors/cases/n8_, n12_, n16_). The immersed boundary thickens the cells by about
+c dx, so at first order eta_re(N_a) = eta_inf + b / N_a: two resolutions give
+eta_inf = (N2 eta2 - N1 eta1) / (N2 - N1), its sem from the runs' sems. The model's number to
+compare is the family at phi = phi as run (the continuum, no thickening), in the 16a gap (box
+correction), at three of its offsets: each member is the library mapped with its own c. Usage, from the repository root:
+  python3 studies/dense-anchors/resolution.py [RBCAL]
+"""
+import glob
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
+family = os.path.join(ROOT, "data", "library", "default", "surrogate_family.json")
+beta = json.load(open(family)).get("box_correction", {}).get("mean", 0.102)
+
+
+def member(phi, ca, lam, c):
+    out = subprocess.run([rbcal, "surrogate", "predict", family, "--phi", repr(phi), "--ca", repr(ca), "--lambda",
+                          repr(lam), "--offset", repr(c)], capture_output=True, text=True, check=True).stdout
+    for line in out.splitlines():
+        if line.strip().startswith("eta_re "):
+            return float(line.split()[1])
+    raise RuntimeError(out)
+
+
+runs = {}
+for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
+    name = os.path.basename(path)[: -len(".result.json")]
+    n_a, point = re.match(r"n(\d+)_(.*)", name).groups()
+    r = json.load(open(path))["result"]
+    runs.setdefault(point, {})[int(n_a)] = (r["eta_re"], r["eta_re_sem"], r["phi_actual"])
+
+print("| point | N_a 8 | N_a 12 | N_a 16 | extrapolated (first order in 1/N_a) | family at phi as run, 16a gap: c 0.45 / 0.75 / 1.05 |")
+print("|---|---|---|---|---|---|")
+for point in sorted(runs):
+    by = runs[point]
+    cells = [f"{by[n][0]:.3f} +- {by[n][1]:.3f}" if n in by else "-" for n in (8, 12, 16)]
+    have = sorted(by)
+    extrapolated = "-"
+    if len(have) >= 2:
+        n1, n2 = have[0], have[-1]
+        (e1, s1, _), (e2, s2, _) = by[n1], by[n2]
+        inf = (n2 * e2 - n1 * e1) / (n2 - n1)
+        sem = math.hypot(n2 * s2, n1 * s1) / (n2 - n1)
+        extrapolated = f"{inf:.3f} +- {sem:.3f} (N_a {n1}, {n2})"
+    ca = float(re.search(r"_Ca([0-9.]+)_", point).group(1))
+    lam = float(re.search(r"_lambda([0-9.]+)", point).group(1))
+    phi = next(iter(by.values()))[2]
+    model = [math.exp((1.0 + beta) * math.log(member(phi, ca, lam, c))) for c in (0.45, 0.75, 1.05)]
+    print(f"| {point} | " + " | ".join(cells) + f" | {extrapolated} | " + " / ".join(f"{m:.3f}" for m in model) + " |")
