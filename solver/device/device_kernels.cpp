@@ -78,11 +78,23 @@ void elastic_forces_of(const Cells& c, const double* x, const int* triangles, co
 
 }  // namespace
 
-void fluid_update(const LatticeShape& l, const FluidUpdate& a) {
+namespace {
+
+// A stored population as the update reads it: float storage holds f_q - w_q.
+template <int q, class T>
+RBCAL_HD inline double loaded(T stored) {
+  if constexpr (sizeof(T) == sizeof(float)) {
+    constexpr double rest = d3q19::w[q];
+    return static_cast<double>(stored) + rest;
+  } else {
+    return stored;
+  }
+}
+
+template <class T>
+void fluid_update_of(const LatticeShape& l, const FluidUpdate& a, const T* f_in, T* f_out) {
   const int nx = l.nx, ny = l.ny, nz = l.nz;
   const std::size_t nodes = l.nodes;
-  const double* f_in = a.f_in;
-  double* f_out = a.f_out;
   const double* nu = a.viscosity;
   const double* force = a.force;
   double* velocity = a.velocity;
@@ -98,24 +110,35 @@ void fluid_update(const LatticeShape& l, const FluidUpdate& a) {
       constexpr int cx = d3q19::c[q][0], cy = d3q19::c[q][1], cz = d3q19::c[q][2];
       const int ys = y - cy;
       if (walls && (ys < 0 || ys >= ny)) {
-        // Half-way bounce-back with the moving-wall term (Ladd 1994), as FluidLattice.
+        // Half-way bounce-back with the moving-wall term (Ladd 1994), as FluidLattice
+        // (the opposite direction has the same weight, so the same shift).
         constexpr int opposite = d3q19::opposite(q);
         constexpr double wall_term = 6.0 * d3q19::w[q] * cz;
-        f[q] = f_in[opposite * nodes + n] + wall_term * (ys < 0 ? u_bottom : u_top);
+        f[q] = loaded<q>(f_in[opposite * nodes + n]) + wall_term * (ys < 0 ? u_bottom : u_top);
       } else {
         const std::size_t from = lattice_index(wrap_once(x - cx, nx), wrap_once(ys, ny), wrap_once(z - cz, nz), ny, nz);
-        f[q] = f_in[q * nodes + from];
+        f[q] = loaded<q>(f_in[q * nodes + from]);
       }
     });
     double u[3];
     collide_trt<double>(f, nu[n], magic, force[n], force[nodes + n], force[2 * nodes + n], u);
-    for (int q = 0; q < d3q19::Q; ++q) f_out[q * nodes + n] = f[q];
+    T* const out = f_out + n;  // captured before the constexpr branch below (nvcc's rule)
+    for_each_direction([&](auto direction) {
+      constexpr int q = decltype(direction)::value;
+      if constexpr (sizeof(T) == sizeof(float)) {
+        constexpr double rest = d3q19::w[q];
+        out[q * nodes] = static_cast<float>(f[q] - rest);
+      } else {
+        out[q * nodes] = f[q];
+      }
+    });
     if (velocity)
       for (int d = 0; d < 3; ++d) velocity[d * nodes + n] = accumulate ? velocity[d * nodes + n] + u[d] : u[d];
   });
 }
 
-void wall_shear_traction(const LatticeShape& l, const double* f, double u_bottom, double u_top, double* out) {
+template <class T>
+void wall_shear_traction_of(const LatticeShape& l, const T* f, double u_bottom, double u_top, double* out) {
   const int ny = l.ny, nz = l.nz;
   const std::size_t nodes = l.nodes;
   const double area = static_cast<double>(l.nx) * nz;
@@ -133,14 +156,27 @@ void wall_shear_traction(const LatticeShape& l, const double* f, double u_bottom
         const int y = cy < 0 ? 0 : ny - 1;
         const double correction = wall_term * (cy < 0 ? u_bottom : u_top);
         double exchanged = 0.0;
-        const double* row = f + q * nodes + lattice_index(x, y, 0, ny, nz);
-        for (int z = 0; z < nz; ++z) exchanged += 2.0 * row[z] - correction;
+        const T* row = f + q * nodes + lattice_index(x, y, 0, ny, nz);
+        for (int z = 0; z < nz; ++z) exchanged += 2.0 * loaded<q>(row[z]) - correction;
         (cy < 0 ? bottom : top) += cz * exchanged;
       }
     });
     atomic_add(&out[0], bottom / area);
     atomic_add(&out[1], top / area);
   });
+}
+
+}  // namespace
+
+void fluid_update(const LatticeShape& l, const FluidUpdate& a) {
+  if (a.h_in) fluid_update_of(l, a, a.h_in, a.h_out);
+  else fluid_update_of(l, a, a.f_in, a.f_out);
+}
+
+void wall_shear_traction(const LatticeShape& l, const double* f, const float* h, double u_bottom, double u_top,
+                         double* out) {
+  if (h) wall_shear_traction_of(l, h, u_bottom, u_top, out);
+  else wall_shear_traction_of(l, f, u_bottom, u_top, out);
 }
 
 void elastic_forces(MembraneLaw law, const Cells& c, const double* x, const int* triangles,

@@ -22,9 +22,13 @@ struct LatticeShape {
   std::size_t nodes;
 };
 
+// Populations in double, or in float as f_q - w_q (FluidConfig::single_precision): exactly
+// one of the two pairs is set.
 struct FluidUpdate {
   const double* f_in;
   double* f_out;
+  const float* h_in;
+  float* h_out;
   const double* viscosity;
   const double* force;
   double* velocity;  // nullptr: not written
@@ -37,7 +41,9 @@ void fluid_update(const LatticeShape& l, const FluidUpdate& a);
 
 // Wall shear traction (z components of FluidLattice::wall_traction) into out[0] (bottom),
 // out[1] (top), which must hold zeros; per unit area.
-void wall_shear_traction(const LatticeShape& l, const double* f, double u_bottom, double u_top, double* out);
+// (f or h: the populations, as in FluidUpdate.)
+void wall_shear_traction(const LatticeShape& l, const double* f, const float* h, double u_bottom, double u_top,
+                         double* out);
 
 struct Cells {
   std::size_t count, nodes_per_cell;

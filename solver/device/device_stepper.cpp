@@ -46,9 +46,11 @@ struct DeviceStepper::Impl {
   bool bending = false;
   double kd = 0, volume_stiffness = 0, v0 = 0;
   std::size_t packed = 0;  // FluidLattice::populations() stride
+  bool single = false;     // populations in float, as f_q - w_q (numerics.precision)
 
   // The state.
   Buffer<double> f, f_next, force, viscosity, velocity;
+  Buffer<float> h, h_next;  // the populations in float storage
   int velocity_steps = 0;
   std::int64_t steps = 0;
   Buffer<double> x, v, forces, x_indicator;
@@ -81,9 +83,8 @@ struct DeviceStepper::Impl {
 DeviceStepper::DeviceStepper(const SimulationCase& c, const LatticeUnits& u, const CellMembrane& membrane,
                              std::size_t cells)
     : impl_(std::make_unique<Impl>()) {
-  if (c.single_precision)
-    throw std::invalid_argument("numerics.precision \"float\" is not on the device path yet: run it with --backend cpu");
   Impl& m = *impl_;
+  m.single = c.single_precision;
   m.lattice = {u.nx, u.ny, u.nz, static_cast<std::size_t>(u.nx) * u.ny * u.nz};
   m.u_bottom = c.quiescent ? 0.0 : -u.wall_speed;
   m.u_top = c.quiescent ? 0.0 : u.wall_speed;
@@ -104,8 +105,13 @@ DeviceStepper::DeviceStepper(const SimulationCase& c, const LatticeUnits& u, con
   m.v0 = membrane.reference_volume();
 
   const std::size_t n = m.lattice.nodes;
-  m.f.resize(d3q19::Q * n);
-  m.f_next.resize(d3q19::Q * n);
+  if (m.single) {
+    m.h.resize(d3q19::Q * n);
+    m.h_next.resize(d3q19::Q * n);
+  } else {
+    m.f.resize(d3q19::Q * n);
+    m.f_next.resize(d3q19::Q * n);
+  }
   m.force.resize(3 * n);
   m.viscosity.resize(n);
   m.velocity.resize(3 * n);
@@ -150,7 +156,16 @@ void DeviceStepper::upload(const DeviceHostState& host, std::int64_t steps) {
   const std::size_t n = m.lattice.nodes;
   const std::vector<double> populations = host.fluid->populations();
   m.packed = populations.size() / d3q19::Q;
-  for (int q = 0; q < d3q19::Q; ++q) m.f.upload(populations.data() + q * m.packed, n, q * n);
+  std::vector<float> shifted(m.single ? n : 0);
+  for (int q = 0; q < d3q19::Q; ++q) {
+    const double* from = populations.data() + q * m.packed;
+    if (m.single) {
+      for (std::size_t i = 0; i < n; ++i) shifted[i] = static_cast<float>(from[i] - d3q19::w[q]);
+      m.h.upload(shifted.data(), n, q * n);
+    } else {
+      m.f.upload(from, n, q * n);
+    }
+  }
   for (int d = 0; d < 3; ++d) m.force.upload(host.fluid->force(d), n, d * n);
   m.viscosity.upload(host.fluid->viscosity(), n);
   m.velocity_steps = 0;
@@ -188,7 +203,16 @@ void DeviceStepper::download_fluid(const DeviceHostState& host) const {
   const Impl& m = *impl_;
   const std::size_t n = m.lattice.nodes;
   std::vector<double> populations(d3q19::Q * m.packed, 0.0);
-  for (int q = 0; q < d3q19::Q; ++q) m.f.download(populations.data() + q * m.packed, n, q * n);
+  std::vector<float> shifted(m.single ? n : 0);
+  for (int q = 0; q < d3q19::Q; ++q) {
+    double* to = populations.data() + q * m.packed;
+    if (m.single) {
+      m.h.download(shifted.data(), n, q * n);
+      for (std::size_t i = 0; i < n; ++i) to[i] = static_cast<double>(shifted[i]) + d3q19::w[q];
+    } else {
+      m.f.download(to, n, q * n);
+    }
+  }
   host.fluid->restore(populations, m.steps);
   *host.velocity_sum_steps = m.velocity_steps;
   if (m.velocity_steps > 0) {
@@ -245,10 +269,12 @@ void DeviceStepper::Impl::rebuild_viscosity() {
 }
 
 void DeviceStepper::Impl::fluid_step(bool write_velocity, bool accumulate) {
-  dk::FluidUpdate a{f.data(), f_next.data(), viscosity.data(), force.data(), write_velocity ? velocity.data() : nullptr,
-                    accumulate, walls, u_bottom, u_top, magic};
+  dk::FluidUpdate a{single ? nullptr : f.data(), single ? nullptr : f_next.data(), single ? h.data() : nullptr,
+                    single ? h_next.data() : nullptr, viscosity.data(), force.data(),
+                    write_velocity ? velocity.data() : nullptr, accumulate, walls, u_bottom, u_top, magic};
   dk::fluid_update(lattice, a);
   f.swap(f_next);
+  h.swap(h_next);
   ++steps;
 }
 
@@ -313,7 +339,9 @@ std::int64_t DeviceStepper::steps_done() const { return impl_->steps; }
 std::array<double, 2> DeviceStepper::wall_shear_traction() const {
   Impl& m = *impl_;
   m.scalar.fill_zero();
-  if (m.walls) dk::wall_shear_traction(m.lattice, m.f.data(), m.u_bottom, m.u_top, m.scalar.data());
+  if (m.walls)
+    dk::wall_shear_traction(m.lattice, m.single ? nullptr : m.f.data(), m.single ? m.h.data() : nullptr, m.u_bottom,
+                            m.u_top, m.scalar.data());
   std::array<double, 2> t{};
   m.scalar.download(t.data(), 2);
   return t;
