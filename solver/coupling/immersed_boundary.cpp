@@ -11,13 +11,6 @@ namespace rbcal::solver {
 
 namespace {
 
-int wrap(int i, int n) { return ((i % n) + n) % n; }
-
-// FluidLattice::index for a lattice of ny x nz rows (x-major, z fastest).
-std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
-  return (static_cast<std::size_t>(x) * ny + y) * nz + z;
-}
-
 // Four consecutive doubles as one vector: the z rows of the 4-point stencil.
 using v4d = double __attribute__((vector_size(4 * sizeof(double))));
 
@@ -62,7 +55,7 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   // coordinate was a fifth of this function's time).
   if (nx > INT16_MAX || ny > INT16_MAX || nz > INT16_MAX)  // KernelStencil's indices
     throw std::invalid_argument("immersed boundary: lattice wider than 32767 nodes");
-  auto in_box = [](int i, int n) { return i >= 0 && i < n ? i : wrap(i, n); };
+  auto in_box = [](int i, int n) { return i >= 0 && i < n ? i : wrap_index(i, n); };
   auto key_of = [&](const Vec3& p) {
     const int x = in_box(support_start(kernel, p.x()), nx);
     const int y = std::clamp(support_start(kernel, p.y()), 0, ny - 1);

@@ -23,11 +23,13 @@ struct alignas(64) KernelStencil {
 };
 static_assert(sizeof(KernelStencil) == 128);
 
-namespace stencil_detail {
+// i wrapped into [0, n) (periodic directions; any i).
+RBCAL_HD inline int wrap_index(int i, int n) { return ((i % n) + n) % n; }
 
-RBCAL_HD inline int wrap(int i, int n) { return ((i % n) + n) % n; }
-
-}  // namespace stencil_detail
+// FluidLattice::index for a lattice of ny x nz rows (x-major, z fastest).
+RBCAL_HD inline std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
+  return (static_cast<std::size_t>(x) * ny + y) * nz + z;
+}
 
 // First lattice node of the support around r: even supports straddle r, the 3-point
 // one is centred on the nearest node.
@@ -66,7 +68,6 @@ RBCAL_HD inline void kernel_weights_1d(KernelKind kernel, double r, int support,
 }
 
 RBCAL_HD inline KernelStencil make_stencil(KernelKind kernel, double px, double py, double pz, int nx, int ny, int nz) {
-  using stencil_detail::wrap;
   KernelStencil s;
   s.count = static_cast<std::int16_t>(kernel_support(kernel));
   int fx, fy, fz;
@@ -75,11 +76,11 @@ RBCAL_HD inline KernelStencil make_stencil(KernelKind kernel, double px, double 
   kernel_weights_1d(kernel, pz, s.count, fz, s.wz);
   // One modulo per direction, only where the support starts outside the box; its later
   // nodes wrap at most once.
-  const int x0 = fx >= 0 && fx < nx ? fx : wrap(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap(fz, nz);
+  const int x0 = fx >= 0 && fx < nx ? fx : wrap_index(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap_index(fz, nz);
   bool clipped = false;
   for (int i = 0; i < s.count; ++i) {
-    s.x[i] = static_cast<std::int16_t>(x0 + i < nx ? x0 + i : wrap(x0 + i, nx));
-    s.z[i] = static_cast<std::int16_t>(z0 + i < nz ? z0 + i : wrap(z0 + i, nz));
+    s.x[i] = static_cast<std::int16_t>(x0 + i < nx ? x0 + i : wrap_index(x0 + i, nx));
+    s.z[i] = static_cast<std::int16_t>(z0 + i < nz ? z0 + i : wrap_index(z0 + i, nz));
     s.y[i] = static_cast<std::int16_t>(fy + i);
     if (s.y[i] < 0 || s.y[i] >= ny) {
       s.wy[i] = 0.0;  // beyond a wall
@@ -104,7 +105,7 @@ RBCAL_HD inline void for_each_stencil_node(const KernelStencil& s, int ny, int n
     for (int b = 0; b < s.count; ++b) {
       const double wab = s.wx[a] * s.wy[b];
       if (wab == 0.0) continue;
-      const std::size_t row = (static_cast<std::size_t>(s.x[a]) * ny + s.y[b]) * nz;
+      const std::size_t row = lattice_index(s.x[a], s.y[b], 0, ny, nz);
       for (int c = 0; c < s.count; ++c) f(row + s.z[c], wab * s.wz[c]);
     }
 }

@@ -30,10 +30,6 @@ RBCAL_HD inline int wrap_once(int i, int n) { return i < 0 ? i + n : (i >= n ? i
 
 RBCAL_HD inline int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-RBCAL_HD inline std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
-  return (static_cast<std::size_t>(x) * ny + y) * nz + z;
-}
-
 // Velocity at a stencil from a node field (components `stride` apart), divided by steps.
 RBCAL_HD inline void interpolate_at(const KernelStencil& s, const double* u, std::size_t stride, int ny, int nz,
                                     double steps, double* out) {
@@ -347,7 +343,7 @@ void inside_crossings(const LatticeShape& l, int lines_per_spacing, const Cells&
         const double image = floor((z + 0.5) / nz);
         const double zw = z - image * nz;
         const int k = static_cast<int>(fmin(fmax(floor(zw + 0.5), 0.0), nz - 1.0));
-        const int column_x = ((floor_div(p, sub) % nx) + nx) % nx;
+        const int column_x = wrap_index(floor_div(p, sub), nx);
         const std::size_t column = static_cast<std::size_t>(column_x) * ny + j;
         const std::size_t node = column * nz + k;
         atomic_add(&partial[node], sign * weight * (k + 0.5 - zw));
