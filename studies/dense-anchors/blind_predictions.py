@@ -9,29 +9,17 @@ truncated to the family's 0.45-1.05), each member with its own sd. The anchors r
 which the shipped family's box correction beta (ln eta_bulk = (1 + beta) ln eta_re, prior
 0.102 +- 0.070) says is more viscous than the library's 8a gap: applied on top, its sd added.
 """
-import glob, json, math, os, subprocess, sys
+import glob, json, math, os, sys
 
-root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from shipped_family import BETA_MEAN as beta_mean, BETA_SD as beta_sd, ROOT as root, V, g
+from shipped_family import member as family_member
+
 rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "rbcal")
-family = os.path.join(root, "data", "library", "default", "surrogate_family.json")
-fam = json.load(open(family))
-box = fam.get("box_correction", {})
-beta_mean, beta_sd = box.get("mean", 0.102), box.get("sd", 0.070)
 
-# Steiner's thickened volume of the 1280-triangle Evans-Fung mesh at radius 1 (S, V, M).
-S, V, M = 8.716, 1.5605, 10.680
-def g(c, n_a):
-    d = c / n_a
-    return 1.0 + (S * d + M * d * d + 4.0 * math.pi * d ** 3 / 3.0) / V
 
 def member(phi, ca, lam, c):
-    out = subprocess.run([rbcal, "surrogate", "predict", family, "--phi", repr(phi), "--ca", repr(ca),
-                          "--lambda", repr(lam), "--offset", repr(c)], capture_output=True, text=True, check=True).stdout
-    for line in out.splitlines():
-        if line.strip().startswith("eta_re "):
-            parts = line.split()
-            return float(parts[1]), float(parts[3])
-    raise RuntimeError(out)
+    return family_member(rbcal, phi, ca, lam, c)
 
 offsets = [0.45 + 0.075 * k for k in range(9)]
 weights = [math.exp(-0.5 * ((c - 0.75) / 0.15) ** 2) for c in offsets]

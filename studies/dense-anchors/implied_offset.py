@@ -14,30 +14,16 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-import subprocess
+
+sys.path.insert(0, HERE)
+from shipped_family import BETA_MEAN as beta, g
+from shipped_family import member as family_member
 
 rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
-family = os.path.join(ROOT, "data", "library", "default", "surrogate_family.json")
-box = json.load(open(family)).get("box_correction", {})
-beta = box.get("mean", 0.102)
-
-# Steiner's thickened volume of the 1280-triangle Evans-Fung mesh at radius 1 (S, V, M),
-# as in blind_predictions.py.
-S, V, M = 8.716, 1.5605, 10.680
-
-
-def g(c, n_a):
-    d = c / n_a
-    return 1.0 + (S * d + M * d * d + 4.0 * math.pi * d ** 3 / 3.0) / V
 
 
 def member(phi, ca, lam, c):
-    out = subprocess.run([rbcal, "surrogate", "predict", family, "--phi", repr(phi), "--ca", repr(ca), "--lambda",
-                          repr(lam), "--offset", repr(c)], capture_output=True, text=True, check=True).stdout
-    for line in out.splitlines():
-        if line.strip().startswith("eta_re "):
-            return float(line.split()[1])
-    raise RuntimeError(out)
+    return family_member(rbcal, phi, ca, lam, c)[0]
 
 
 def crossing(offsets, values, target):

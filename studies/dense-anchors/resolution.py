@@ -14,23 +14,19 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, HERE)
+from shipped_family import BETA_MEAN as beta, g
+from shipped_family import member as family_member
+
 rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
-family = os.path.join(ROOT, "data", "library", "default", "surrogate_family.json")
-beta = json.load(open(family)).get("box_correction", {}).get("mean", 0.102)
 
 
 def member(phi, ca, lam, c):
-    out = subprocess.run([rbcal, "surrogate", "predict", family, "--phi", repr(phi), "--ca", repr(ca), "--lambda",
-                          repr(lam), "--offset", repr(c)], capture_output=True, text=True, check=True).stdout
-    for line in out.splitlines():
-        if line.strip().startswith("eta_re "):
-            return float(line.split()[1])
-    raise RuntimeError(out)
+    return family_member(rbcal, phi, ca, lam, c)[0]
 
 
 runs = {}
