@@ -4,6 +4,9 @@
 #include <limits>
 #include <numbers>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 namespace rbcal::calibration {
 
 JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector<RelativeViscosityPoint>& points,
@@ -16,13 +19,15 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
   const auto n = static_cast<Eigen::Index>(points.size());
   out.residual.resize(n);
   out.covariance = std::move(model.covariance);
+  Eigen::VectorXd independent(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto measured =
         observed_relative_viscosity(points[static_cast<std::size_t>(i)], plasma_viscosity_is_parameter, at.plasma_viscosity);
     const double predicted = model.points[static_cast<std::size_t>(i)].eta_re;
     out.residual(i) = measured.eta_re - predicted;
-    out.covariance(i, i) += measured.sd * measured.sd + std::pow(relative_discrepancy * predicted, 2);
+    independent(i) = measured.sd * measured.sd + std::pow(relative_discrepancy * predicted, 2);
   }
+  out.covariance.add_diagonal(independent);
   return out;
 }
 
@@ -33,21 +38,67 @@ double WhitenedResiduals::log_likelihood() const {
   return std::isfinite(result) ? result : -std::numeric_limits<double>::infinity();
 }
 
-WhitenedResiduals whiten(const JointResiduals& joint) {
+namespace {
+
+WhitenedResiduals whiten_dense(const Eigen::MatrixXd& covariance, const Eigen::VectorXd& residual) {
   WhitenedResiduals out;
-  if (!joint.covariance.allFinite() || !joint.residual.allFinite() || joint.residual.size() == 0) return out;
-  Eigen::LLT<Eigen::MatrixXd> llt(joint.covariance);
+  Eigen::LLT<Eigen::MatrixXd> llt(covariance);
   if (llt.info() != Eigen::Success) {
-    Eigen::MatrixXd sigma = joint.covariance;
+    Eigen::MatrixXd sigma = covariance;
     const double jitter = 1e-12 * sigma.diagonal().mean();
     sigma.diagonal().array() += jitter > 0.0 ? jitter : 1e-300;
     llt.compute(sigma);
     if (llt.info() != Eigen::Success) return out;
   }
-  out.whitened = llt.matrixL().solve(joint.residual);
+  out.whitened = llt.matrixL().solve(residual);
   out.log_determinant = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
   out.ok = out.whitened.allFinite() && std::isfinite(out.log_determinant);
   return out;
+}
+
+WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const Eigen::VectorXd& residual) {
+  WhitenedResiduals out;
+  Eigen::VectorXd d = sigma.diagonal;
+  if (d.size() == 0 || !(d.minCoeff() > 0.0)) {  // the factor alone is singular: the same jitter as dense
+    const double jitter = 1e-12 * sigma.variances().mean();
+    if (d.size() == 0) d = Eigen::VectorXd::Zero(residual.size());
+    d.array() += jitter > 0.0 ? jitter : 1e-300;
+  }
+  const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
+  const Eigen::VectorXd y = inverse_root.cwiseProduct(residual);
+  if (sigma.rank() == 0) {  // independent errors
+    out.whitened = y;
+    out.log_determinant = d.array().log().sum();
+    out.ok = out.whitened.allFinite() && std::isfinite(out.log_determinant);
+    return out;
+  }
+  const Eigen::MatrixXd w = inverse_root.asDiagonal() * sigma.factor;
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(w.cols(), w.cols());
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(w.transpose());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  if (eigen.info() != Eigen::Success) return out;
+  const Eigen::VectorXd s2 = eigen.eigenvalues().cwiseMax(0.0);
+  Eigen::VectorXd g(s2.size());
+  for (Eigen::Index k = 0; k < s2.size(); ++k)  // ((1 + s^2)^-1/2 - 1) / s^2, -1/2 at s = 0
+    g(k) = s2(k) > 1e-8 ? (1.0 / std::sqrt(1.0 + s2(k)) - 1.0) / s2(k) : -0.5 + 0.375 * s2(k);
+  const Eigen::MatrixXd& v = eigen.eigenvectors();
+  out.whitened = y + w * (v * g.cwiseProduct(v.transpose() * (w.transpose() * y)));
+  out.log_determinant = d.array().log().sum() + s2.array().log1p().sum();
+  out.ok = out.whitened.allFinite() && std::isfinite(out.log_determinant);
+  return out;
+}
+
+}  // namespace
+
+WhitenedResiduals whiten(const JointResiduals& joint) {
+  const surrogate::JointCovariance& sigma = joint.covariance;
+  const bool finite = (sigma.full.size() == 0 || sigma.full.allFinite()) &&
+                      (sigma.diagonal.size() == 0 || sigma.diagonal.allFinite()) &&
+                      (sigma.factor.size() == 0 || sigma.factor.allFinite());
+  if (!finite || !joint.residual.allFinite() || joint.residual.size() == 0 || sigma.size() != joint.residual.size())
+    return {};
+  return sigma.dense_is_cheaper() ? whiten_dense(sigma.dense(), joint.residual)
+                                  : whiten_low_rank(sigma, joint.residual);
 }
 
 }  // namespace rbcal::calibration

@@ -12,12 +12,13 @@
 
 #include "calibration/calibration_input.hpp"
 #include "calibration/viscosity_observation.hpp"
+#include "surrogate/joint_covariance.hpp"
 
 namespace rbcal::calibration {
 
 struct JointResiduals {
-  Eigen::VectorXd residual;    // measured eta_re - predicted
-  Eigen::MatrixXd covariance;  // Sigma
+  Eigen::VectorXd residual;               // measured eta_re - predicted
+  surrogate::JointCovariance covariance;  // Sigma
 };
 
 // at: eta0 and the model's nuisance values; relative_discrepancy: sigma_d (0 without it).
@@ -27,14 +28,20 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
 
 struct WhitenedResiduals {
   bool ok = false;                // false: Sigma is not finite and positive definite
-  Eigen::VectorXd whitened;       // L^-1 r with Sigma = L L^T: independent, unit variance
+  // W r with W Sigma W^T = I: independent, unit variance. W = L^-1 (Sigma = L L^T) where Sigma
+  // is dense; Sigma^-1/2 where it is a diagonal plus a low-rank factor.
+  Eigen::VectorXd whitened;
   double log_determinant = 0.0;   // ln det Sigma
   // -1/2 (|whitened|^2 + ln det Sigma + n ln 2 pi); -inf when not ok.
   double log_likelihood() const;
 };
 
 // Where Sigma is singular (points with zero stated sd at which the model is certain) it gets a
-// jitter of 1e-12 of its mean diagonal.
+// jitter of 1e-12 of its mean diagonal. With a low-rank factor of rank r < n, D + F F^T is
+// whitened in O(n r^2) by the Woodbury identity and the matrix determinant lemma in their
+// symmetric form: with W = D^-1/2 F and W^T W = V S^2 V^T,
+//   Sigma^-1/2 = (I + W V g(S) V^T W^T) D^-1/2,  g(s) = ((1 + s^2)^-1/2 - 1) / s^2,
+//   ln det Sigma = sum ln D_i + sum ln(1 + s_k^2).
 WhitenedResiduals whiten(const JointResiduals& joint);
 
 }  // namespace rbcal::calibration

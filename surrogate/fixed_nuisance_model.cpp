@@ -43,8 +43,9 @@ ViscosityPrediction FixedNuisanceModel::predict_with(double phi, double capillar
 }
 
 JointViscosityPrediction FixedNuisanceModel::predict_joint(const std::vector<ViscosityQuery>& queries,
-                                                           const std::vector<double>& values) const {
-  return base_.predict_joint(queries, all_values(values));
+                                                           const std::vector<double>& values,
+                                                           CovarianceForm form) const {
+  return base_.predict_joint(queries, all_values(values), form);
 }
 
 }  // namespace rbcal::surrogate

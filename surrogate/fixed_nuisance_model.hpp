@@ -21,7 +21,8 @@ class FixedNuisanceModel : public ViscosityModel {
   ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                    const std::vector<double>& values) const override;
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
-                                         const std::vector<double>& values) const override;
+                                         const std::vector<double>& values,
+                                         CovarianceForm form = CovarianceForm::automatic) const override;
 
  private:
   // The base model's nuisance values: the free ones given (or their means), the fixed one set.

@@ -1,5 +1,6 @@
 #include "surrogate/gaussian_process.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -41,6 +42,7 @@ GaussianProcess::GaussianProcess(GaussianProcessData data, GaussianProcessHyperp
   }
   scaled_points_ = data_.inputs.transpose();
   for (Eigen::Index j = 0; j < d; ++j) scaled_points_.row(j) /= kernel_.length_scales(j);
+  scaled_points_by_dimension_ = scaled_points_.transpose();
   k_cholesky_.compute(k);
   if (k_cholesky_.info() != Eigen::Success) throw std::runtime_error("GaussianProcess: covariance matrix not positive definite");
   k_inverse_basis_ = k_cholesky_.solve(data_.basis);
@@ -68,6 +70,25 @@ double scaled_distance_squared(const Eigen::VectorXd& z, const Eigen::MatrixXd& 
   return r2;
 }
 
+// k between each row of a and each row of b (|a| x |b|), both scaled by the length scales, as
+// vectorised array operations; derivative_factor, if given, receives the derivative factor.
+Eigen::MatrixXd kernel_between(const Matern52Kernel& kernel, const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
+                               Eigen::MatrixXd* derivative_factor) {
+  Eigen::MatrixXd k(a.rows(), b.rows());
+  if (derivative_factor) derivative_factor->resize(a.rows(), b.rows());
+  Eigen::ArrayXd r2(a.rows()), u(a.rows()), e(a.rows());
+  const double s2 = kernel.signal_variance, root5 = std::sqrt(5.0);
+  for (Eigen::Index j = 0; j < b.rows(); ++j) {
+    r2.setZero();
+    for (Eigen::Index d = 0; d < a.cols(); ++d) r2 += (a.col(d).array() - b(j, d)).square();
+    u = root5 * r2.sqrt();
+    e = (-u).exp();
+    k.col(j) = s2 * (1.0 + u + u.square() / 3.0) * e;  // of_scaled_distance
+    if (derivative_factor) derivative_factor->col(j) = s2 * (5.0 / 3.0) * (1.0 + u) * e;
+  }
+  return k;
+}
+
 }  // namespace
 
 Eigen::VectorXd GaussianProcess::cross_covariance(const Eigen::VectorXd& x) const {
@@ -90,18 +111,74 @@ double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::V
   return variance_given(cross_covariance(x), h_at_x);
 }
 
-Eigen::MatrixXd GaussianProcess::latent_covariance(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const {
-  const Eigen::Index q = x_rows.rows();
+Eigen::MatrixXd GaussianProcess::cross_covariances(const Eigen::MatrixXd& x_rows, Eigen::MatrixXd* derivative_factor) const {
+  return kernel_between(kernel_, scaled_points_by_dimension_,
+                        x_rows * kernel_.length_scales.cwiseInverse().asDiagonal(), derivative_factor);
+}
+
+GaussianProcessPredictions GaussianProcess::predict_many(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows,
+                                                         LatentCovariance covariance) const {
+  const Eigen::Index q = x_rows.rows(), d = x_rows.cols();
   if (h_rows.rows() != q) throw std::invalid_argument("GaussianProcess: one basis row per query point needed");
-  Eigen::MatrixXd k_star(scaled_points_.cols(), q);
-  for (Eigen::Index j = 0; j < q; ++j) k_star.col(j) = cross_covariance(x_rows.row(j).transpose());
-  Eigen::MatrixXd prior(q, q);
-  for (Eigen::Index i = 0; i < q; ++i)
-    for (Eigen::Index j = 0; j <= i; ++j)
-      prior(i, j) = prior(j, i) = kernel_(x_rows.row(i).transpose(), x_rows.row(j).transpose());
+  Eigen::MatrixXd factor;
+  const Eigen::MatrixXd k_star = cross_covariances(x_rows, &factor);
+  GaussianProcessPredictions p;
+  p.mean = h_rows * beta_ + k_star.transpose() * alpha_;  // eq. 2.41
+  // d k_i / d x_j = -factor_i (z_j - p_ij) / l_j: sum_i alpha_i factor_i (z_j - p_ij), scaled by -1/l_j.
+  const Eigen::VectorXd weight = factor.transpose() * alpha_;
+  p.kernel_gradient.resize(q, d);
+  for (Eigen::Index j = 0; j < d; ++j) {
+    const Eigen::VectorXd weighted_point = factor.transpose() * alpha_.cwiseProduct(scaled_points_by_dimension_.col(j));
+    const Eigen::VectorXd z = x_rows.col(j) / kernel_.length_scales(j);
+    p.kernel_gradient.col(j) = -(z.cwiseProduct(weight) - weighted_point) / kernel_.length_scales(j);
+  }
   const Eigen::MatrixXd v = k_cholesky_.matrixL().solve(k_star);
-  const Eigen::MatrixXd r = h_rows.transpose() - k_inverse_basis_.transpose() * k_star;  // m x q
-  return prior - v.transpose() * v + r.transpose() * a_cholesky_.solve(r);
+  const Eigen::MatrixXd r = h_rows.transpose() - k_inverse_basis_.transpose() * k_star;  // R = h* - H^T K^-1 k*
+  const Eigen::MatrixXd mean_part = a_cholesky_.matrixL().solve(r);                      // A = L_A L_A^T
+  // eq. 2.42 at each point: k** - k*^T K^-1 k* + R^T A^-1 R
+  const Eigen::VectorXd exact_variance =
+      (kernel_.signal_variance - v.colwise().squaredNorm().array() + mean_part.colwise().squaredNorm().array())
+          .matrix()
+          .transpose();
+  p.variance = exact_variance.cwiseMax(0.0);
+  if (covariance == LatentCovariance::exact) {  // eq. 2.42 for every pair
+    const Eigen::MatrixXd scaled = x_rows * kernel_.length_scales.cwiseInverse().asDiagonal();
+    p.covariance.full = kernel_between(kernel_, scaled, scaled, nullptr);
+    p.covariance.full.noalias() -= v.transpose() * v;
+    p.covariance.full.noalias() += mean_part.transpose() * mean_part;
+  } else if (covariance == LatentCovariance::low_rank) {
+    // Pivoted Cholesky of eq. 2.42's matrix, one column at a time where the unexplained variance
+    // is largest (Harbrecht, Peters & Schneider 2012, Appl. Numer. Math. 62:428), until none
+    // exceeds kLowRankTolerance; the rest is kept on the diagonal.
+    const Eigen::MatrixXd scaled = x_rows * kernel_.length_scales.cwiseInverse().asDiagonal();
+    Eigen::VectorXd remaining = exact_variance.cwiseMax(0.0);
+    const Eigen::Index most = std::min<Eigen::Index>(q, kLowRankMaxColumns);
+    Eigen::MatrixXd g(q, most);
+    Eigen::Index k = 0;
+    for (; k < most; ++k) {
+      Eigen::Index pivot = 0;
+      const double largest = remaining.maxCoeff(&pivot);
+      if (!(largest > kLowRankTolerance)) break;
+      Eigen::VectorXd column = kernel_between(kernel_, scaled, scaled.row(pivot), nullptr);
+      column.noalias() -= v.transpose() * v.col(pivot);
+      column.noalias() += mean_part.transpose() * mean_part.col(pivot);
+      column.noalias() -= g.leftCols(k) * g.row(pivot).head(k).transpose();
+      g.col(k) = column / std::sqrt(largest);
+      remaining -= g.col(k).cwiseAbs2();
+      remaining(pivot) = 0.0;
+    }
+    p.covariance.factor = g.leftCols(k);
+    p.covariance.diagonal = remaining.cwiseMax(0.0);
+  }
+  return p;
+}
+
+Eigen::MatrixXd GaussianProcess::latent_covariance(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const {
+  return predict_many(x_rows, h_rows, LatentCovariance::exact).covariance.full;
+}
+
+JointCovariance GaussianProcess::latent_covariance_factor(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const {
+  return predict_many(x_rows, h_rows, LatentCovariance::low_rank).covariance;
 }
 
 GaussianProcessPrediction GaussianProcess::predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,

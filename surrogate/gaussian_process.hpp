@@ -11,9 +11,16 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "surrogate/joint_covariance.hpp"
 #include "surrogate/matern52_kernel.hpp"
 
 namespace rbcal::surrogate {
+
+// The low-rank form of the latent covariance (latent_covariance_factor) leaves out less than
+// this variance of ln eta_re at any point (sd 1e-4: a hundredth of a per cent of eta_re, against
+// measurement errors of a per cent or more), with at most kLowRankMaxColumns columns.
+inline constexpr double kLowRankTolerance = 1e-8;
+inline constexpr Eigen::Index kLowRankMaxColumns = 600;
 
 // Fixed jitter added to every diagonal element of K (variance units of y), so that K stays
 // numerically positive definite even for noise-free points; sd 1e-5 in y = ln eta_re.
@@ -43,6 +50,19 @@ struct GaussianProcessPrediction {
   Eigen::VectorXd mean_gradient;   // d mean / d x
 };
 
+// The same at q points at once (row i: point i): the kernel evaluated vectorised and the
+// solves as matrix operations, for the many points of a calibration's likelihood.
+struct GaussianProcessPredictions {
+  Eigen::VectorXd mean;             // q
+  Eigen::VectorXd variance;         // q
+  Eigen::MatrixXd kernel_gradient;  // q x d: the gradient of the kernel part k*^T alpha (add h'(x)^T beta)
+  JointCovariance covariance;       // of the latent values, where asked (see LatentCovariance)
+};
+
+// Which joint covariance predict_many adds: none, latent_covariance's exact matrix (full), or
+// latent_covariance_factor's diagonal and factor.
+enum class LatentCovariance { none, exact, low_rank };
+
 // Closed-form leave-one-out predictions of each y_i from all other points, beta
 // re-estimated each time (R&W eqs. 5.10-5.12 with K^-1 replaced by P):
 //   mean_i = y_i - [P y]_i / P_ii,   variance_i = 1 / P_ii (of y_i, noise included).
@@ -61,10 +81,20 @@ class GaussianProcess {
   GaussianProcessPrediction predict(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x,
                                     const Eigen::MatrixXd& h_jacobian) const;
   double latent_variance(const Eigen::VectorXd& x, const Eigen::VectorXd& h_at_x) const;
+  // predict at every row of x_rows (h_rows: the basis there), the numbers of predict, and their
+  // joint covariance in the form asked (the kernel and the solves shared).
+  GaussianProcessPredictions predict_many(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows,
+                                          LatentCovariance covariance = LatentCovariance::none) const;
   // Joint covariance of the latent values at several points (row i of x_rows: a point, of
   // h_rows: its basis), eq. 2.42 for every pair: k(x_i, x_j) - k_i^T K^-1 k_j + R_i^T A^-1 R_j.
   // Its diagonal is latent_variance (not clipped at 0 here: the matrix is kept whole).
   Eigen::MatrixXd latent_covariance(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const;
+  // The same for many points as a diagonal plus a low-rank factor: the pivoted Cholesky
+  // factorisation of that matrix, stopped where no point's variance left unexplained exceeds
+  // kLowRankTolerance, which stays on the diagonal (exact there; off the diagonal each
+  // neglected covariance is below that tolerance). Its rank is set by how many length scales
+  // the points span, not by how many points there are.
+  JointCovariance latent_covariance_factor(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows) const;
 
   // GLS estimate beta = A^-1 H^T K^-1 y (eq. 2.42's beta-bar) and its covariance A^-1.
   const Eigen::VectorXd& mean_coefficients() const { return beta_; }
@@ -89,6 +119,9 @@ class GaussianProcess {
   Eigen::MatrixXd projection() const;  // P
   Eigen::VectorXd cross_covariance(const Eigen::VectorXd& x) const;
   double variance_given(const Eigen::VectorXd& k_star, const Eigen::VectorXd& h_at_x) const;
+  // k(x_j, training point i) for the rows x_j of x_rows (n x q); derivative_factor, if given,
+  // receives the kernel's derivative factor at the same pairs.
+  Eigen::MatrixXd cross_covariances(const Eigen::MatrixXd& x_rows, Eigen::MatrixXd* derivative_factor = nullptr) const;
 
   GaussianProcessData data_;
   GaussianProcessHyperparameters hyperparameters_;
@@ -96,6 +129,7 @@ class GaussianProcess {
   // Training inputs by column (d x n), scaled by the length scales: each point contiguous,
   // so predictions loop over them without temporaries (the MCMC calls predict millions of times).
   Eigen::MatrixXd scaled_points_;
+  Eigen::MatrixXd scaled_points_by_dimension_;  // the same, n x d: each coordinate contiguous, for batches
   Eigen::LLT<Eigen::MatrixXd> k_cholesky_;  // K = L L^T
   Eigen::MatrixXd k_inverse_basis_;         // K^-1 H (n x m)
   Eigen::LLT<Eigen::MatrixXd> a_cholesky_;  // A = H^T K^-1 H

@@ -109,7 +109,8 @@ ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary
 }
 
 JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ViscosityQuery>& queries,
-                                                          const std::vector<double>& values) const {
+                                                          const std::vector<double>& values,
+                                                          CovarianceForm form) const {
   const double offset = values.empty() ? offset_.mean : values.at(0);
   if (values.size() > 1u)
     throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
@@ -127,10 +128,9 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
   std::vector<JointViscosityPrediction> member(members_.size());
   for (std::size_t k = 0; k < members_.size(); ++k) {
     if (correlation_weight(k) != 0.0) {
-      member[k] = members_[k].model->predict_joint(queries, {});
+      member[k] = members_[k].model->predict_joint(queries, {}, form);
     } else if (w[k] != 0.0) {
-      for (const ViscosityQuery& q : queries)
-        member[k].points.push_back(members_[k].model->predict(q.phi, q.capillary_number, q.viscosity_ratio));
+      member[k].points = members_[k].model->predict_many(queries);
     }
   }
   Eigen::VectorXd sd(n), box_gradient(n);
@@ -140,19 +140,12 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
     sd(i) = b.sd_without_box;
     box_gradient(i) = b.box_gradient;
   }
-  Eigen::MatrixXd correlation = Eigen::MatrixXd::Zero(n, n);
-  for (std::size_t k : {lower, lower + 1}) {
-    const double weight = correlation_weight(k);
-    if (weight == 0.0) continue;
-    const Eigen::MatrixXd& c = member[k].covariance;
-    for (Eigen::Index i = 0; i < n; ++i)
-      for (Eigen::Index j = 0; j < n; ++j) {
-        const double scale = std::sqrt(std::max(c(i, i), 0.0) * std::max(c(j, j), 0.0));
-        correlation(i, j) += weight * (i == j ? 1.0 : scale > 0.0 ? c(i, j) / scale : 0.0);
-      }
-  }
-  out.covariance = sd.asDiagonal() * correlation * sd.asDiagonal();
-  if (box_) out.covariance += box_->sd * box_->sd * box_gradient * box_gradient.transpose();
+  JointCovariance correlation;
+  for (std::size_t k : {lower, lower + 1})
+    if (correlation_weight(k) != 0.0) correlation.add(correlation_of(member[k].covariance), correlation_weight(k));
+  out.covariance = std::move(correlation);
+  out.covariance.scale(sd);
+  if (box_) out.covariance.add_rank_one(box_gradient, box_->sd * box_->sd);
   return out;
 }
 

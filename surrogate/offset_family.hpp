@@ -62,7 +62,8 @@ class OffsetFamilyModel final : public ViscosityModel {
   ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                    const std::vector<double>& values) const override;
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
-                                         const std::vector<double>& values) const override;
+                                         const std::vector<double>& values,
+                                         CovarianceForm form = CovarianceForm::automatic) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }
   std::vector<ModelNuisance> nuisances() const override;

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "surrogate/joint_covariance.hpp"
+
 namespace rbcal::surrogate {
 
 struct ViscosityPrediction {
@@ -36,8 +38,13 @@ struct ViscosityQuery {
 // predicted eta_re (model uncertainty only; its diagonal is each point's sd^2).
 struct JointViscosityPrediction {
   std::vector<ViscosityPrediction> points;
-  Eigen::MatrixXd covariance;
+  JointCovariance covariance;  // of the eta_re errors
 };
+
+// Up to this many points a surrogate gives its joint covariance exactly, as one n x n matrix;
+// beyond, as a diagonal plus a low-rank factor (joint_covariance.hpp), whose likelihood costs
+// O(n r^2) instead of O(n^3).
+inline constexpr std::size_t kExactJointCovarianceLimit = 256;
 
 // A parameter of the model that is not known exactly and that the calibration therefore
 // carries as a nuisance parameter with this prior: normal(mean, sd) truncated to [min, max].
@@ -58,6 +65,13 @@ class ViscosityModel {
   // A model with nuisance parameters predicts at their prior means here.
   virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
   virtual ParameterRange range() const = 0;
+  // predict at each query (a model may batch them: the same numbers, faster).
+  virtual std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const {
+    std::vector<ViscosityPrediction> out;
+    out.reserve(queries.size());
+    for (const ViscosityQuery& q : queries) out.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
+    return out;
+  }
 
   // The model's nuisance parameters (none for a plain surrogate), and its prediction at given
   // values of them (one per nuisances(), in that order; predict() uses their means).
@@ -73,17 +87,19 @@ class ViscosityModel {
   // points together. A likelihood that treats them as independent lets them average away over a
   // sample's points. This default knows no correlation: the covariance is diagonal.
   virtual JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
-                                                 const std::vector<double>& nuisance_values) const {
+                                                 const std::vector<double>& nuisance_values,
+                                                 CovarianceForm /*form*/ = CovarianceForm::automatic) const {
     JointViscosityPrediction out;
     const auto n = static_cast<Eigen::Index>(queries.size());
-    out.covariance = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd variances(n);
     for (Eigen::Index i = 0; i < n; ++i) {
       const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
       out.points.push_back(nuisance_values.empty()
                                ? predict(q.phi, q.capillary_number, q.viscosity_ratio)
                                : predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
-      out.covariance(i, i) = out.points.back().sd * out.points.back().sd;
+      variances(i) = out.points.back().sd * out.points.back().sd;
     }
+    out.covariance = JointCovariance::diagonal_only(std::move(variances));
     return out;
   }
 };

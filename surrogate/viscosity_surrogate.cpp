@@ -157,22 +157,49 @@ ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_num
   return out;
 }
 
-JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ViscosityQuery>& queries,
-                                                          const std::vector<double>& /*nuisance_values*/) const {
-  JointViscosityPrediction out;
+std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vector<ViscosityQuery>& queries,
+                                                                 LatentCovariance form, JointCovariance* covariance) const {
   const auto n = static_cast<Eigen::Index>(queries.size());
   Eigen::MatrixXd x_rows(n, 3), h_rows(n, 1 + terms_.ca + terms_.lambda);
-  Eigen::VectorXd eta(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
-    out.points.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
     const Eigen::VectorXd x = input(q.phi, q.capillary_number, q.viscosity_ratio);
     x_rows.row(i) = x.transpose();
     h_rows.row(i) = basis(x).transpose();
-    eta(i) = out.points.back().eta_re;
   }
-  out.covariance = (predictive_sd_scale_ * predictive_sd_scale_) * eta.asDiagonal() *
-                   process_.latent_covariance(x_rows, h_rows) * eta.asDiagonal();
+  GaussianProcessPredictions p = process_.predict_many(x_rows, h_rows, form);
+  if (covariance) *covariance = std::move(p.covariance);
+  std::vector<ViscosityPrediction> out(queries.size());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+    const Eigen::VectorXd x = x_rows.row(i).transpose();
+    const Eigen::VectorXd gradient =
+        p.kernel_gradient.row(i).transpose() + basis_jacobian(x).transpose() * process_.mean_coefficients();
+    ViscosityPrediction& o = out[static_cast<std::size_t>(i)];  // as predict
+    o.eta_re = std::exp(p.mean(i));
+    o.sd = o.eta_re * predictive_sd_scale_ * std::sqrt(p.variance(i));
+    o.d_phi = o.eta_re * gradient(0);
+    o.d_ln_ca = o.eta_re * gradient(1);
+    o.d_ln_lambda = o.eta_re * gradient(2);
+    o.inside_hull = inside_hull(q.phi, q.capillary_number, q.viscosity_ratio);
+  }
+  return out;
+}
+
+std::vector<ViscosityPrediction> ViscositySurrogate::predict_many(const std::vector<ViscosityQuery>& queries) const {
+  return predict_rows(queries, LatentCovariance::none, nullptr);
+}
+
+JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ViscosityQuery>& queries,
+                                                          const std::vector<double>& /*nuisance_values*/,
+                                                          CovarianceForm form) const {
+  const bool exact = form == CovarianceForm::exact ||
+                     (form == CovarianceForm::automatic && queries.size() <= kExactJointCovarianceLimit);
+  JointViscosityPrediction out;
+  out.points = predict_rows(queries, exact ? LatentCovariance::exact : LatentCovariance::low_rank, &out.covariance);
+  Eigen::VectorXd eta(static_cast<Eigen::Index>(queries.size()));
+  for (Eigen::Index i = 0; i < eta.size(); ++i) eta(i) = out.points[static_cast<std::size_t>(i)].eta_re;
+  out.covariance.scale(predictive_sd_scale_ * eta);  // delta method, as predict's sd
   return out;
 }
 

@@ -58,11 +58,13 @@ class ViscositySurrogate final : public ViscosityModel {
                      double predictive_sd_scale = 1.0);
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
   ParameterRange range() const override { return range_; }
   // Covariance from the process's joint latent covariance of ln eta_re, carried to eta_re by the
   // delta method as predict's sd is: cov(eta_i, eta_j) = eta_i eta_j cov(y_i, y_j).
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
-                                         const std::vector<double>& nuisance_values) const override;
+                                         const std::vector<double>& nuisance_values,
+                                         CovarianceForm form = CovarianceForm::automatic) const override;
 
   // Latent predictive sd of ln eta_re (= relative sd of eta_re), the sd scale applied.
   double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;
@@ -101,6 +103,9 @@ class ViscositySurrogate final : public ViscosityModel {
   static Terms terms_for(const std::vector<TrainingCase>& cases);
   static GaussianProcessData process_data(const std::vector<TrainingCase>& cases, Terms terms);
   static Eigen::VectorXd basis_of(const Eigen::VectorXd& x, Terms terms);
+  // predict_many, and the process's joint covariance of ln eta_re in the form asked.
+  std::vector<ViscosityPrediction> predict_rows(const std::vector<ViscosityQuery>& queries, LatentCovariance form,
+                                                JointCovariance* covariance) const;
 
   std::vector<TrainingCase> cases_;
   std::string source_library_;

@@ -154,6 +154,59 @@ TEST(GaussianProcess, JointLatentCovarianceObeysTheConditioningRule) {
   }
 }
 
+// The batched predictions are predict's numbers at every point.
+TEST(GaussianProcess, BatchedPredictionsArePointByPointPredictions) {
+  const GaussianProcessData data = random_data(25, 12);
+  const GaussianProcess gp(data, some_hyperparameters());
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  Eigen::MatrixXd x(40, 3), h(40, 2);
+  for (int i = 0; i < 40; ++i) {
+    for (int k = 0; k < 3; ++k) x(i, k) = u(rng);
+    h.row(i) << x(i, 0), x(i, 0) * x(i, 1);
+  }
+  const GaussianProcessPredictions many = gp.predict_many(x, h);
+  for (int i = 0; i < 40; ++i) {
+    Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(2, 3);  // of h = (x0, x0 x1)
+    jacobian(0, 0) = 1.0, jacobian(1, 0) = x(i, 1), jacobian(1, 1) = x(i, 0);
+    const GaussianProcessPrediction one = gp.predict(x.row(i).transpose(), h.row(i).transpose(), jacobian);
+    EXPECT_NEAR(many.mean(i), one.mean, 1e-12 * (1.0 + std::abs(one.mean)));
+    EXPECT_NEAR(many.variance(i), one.variance, 1e-12 + 1e-10 * one.variance);
+    const Eigen::VectorXd gradient = many.kernel_gradient.row(i).transpose() + jacobian.transpose() * gp.mean_coefficients();
+    EXPECT_NEAR((gradient - one.mean_gradient).norm(), 0.0, 1e-10 * (1.0 + one.mean_gradient.norm()));
+  }
+}
+
+// The low-rank form against the exact matrix at many points spread over a few length scales:
+// the diagonal exact, every entry within the stated tolerance, and a rank well below the
+// number of points (it is set by the span in length scales, not by the count).
+TEST(GaussianProcess, LowRankLatentCovarianceIsTheExactMatrixWithinItsTolerance) {
+  const GaussianProcessData data = random_data(30, 13);
+  const GaussianProcess gp(data, some_hyperparameters());
+  const auto lines = [](int per_line) {  // four lines of points, as a sample's hematocrits
+    Eigen::MatrixXd x(4 * per_line, 3), h(4 * per_line, 2);
+    for (int i = 0; i < 4 * per_line; ++i) {
+      x.row(i) << 0.2 + 0.2 * (i / per_line), (i % per_line) / (per_line - 1.0), 0.5;
+      h.row(i) << x(i, 0), x(i, 0) * x(i, 1);
+    }
+    return std::pair{x, h};
+  };
+  const auto [x, h] = lines(100);
+  const Eigen::MatrixXd exact = gp.latent_covariance(x, h);
+  const JointCovariance low = gp.latent_covariance_factor(x, h);
+  const Eigen::MatrixXd approximate = low.dense();
+  const auto [x2, h2] = lines(200);  // twice the points on the same lines: hardly more columns
+  const Eigen::Index rank_twice = gp.latent_covariance_factor(x2, h2).rank();
+  EXPECT_LT(low.rank(), 200);
+  EXPECT_LE(rank_twice, low.rank() + low.rank() / 10);
+  EXPECT_NEAR((approximate.diagonal() - exact.diagonal().cwiseMax(0.0)).cwiseAbs().maxCoeff(), 0.0,
+              1e-12 * exact.diagonal().maxCoeff());
+  EXPECT_LE((approximate - exact).cwiseAbs().maxCoeff(), kLowRankTolerance);
+  EXPECT_GT(exact.cwiseAbs().maxCoeff(), 1e4 * kLowRankTolerance);  // the tolerance is not the whole matrix
+  const GaussianProcessPredictions both = gp.predict_many(x, h, LatentCovariance::low_rank);
+  EXPECT_EQ(both.covariance.factor, low.factor);
+}
+
 TEST(HyperparameterFit, RecoversKnownLengthScalesOfASampledProcess) {
   // Draw one sample of a zero-mean-plus-constant GP with known hyper-parameters at 250
   // random points in [0, 1]^3, then fit; ML estimates scatter, so the tolerance is a

@@ -51,15 +51,15 @@ class CorrelatedMember final : public ViscosityModel {
     p.sd = 0.02 * p.eta_re * (1.0 + offset_);
     return p;
   }
-  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& q,
-                                         const std::vector<double>& /*nuisance*/) const override {
+  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& q, const std::vector<double>& /*nuisance*/,
+                                         CovarianceForm /*form*/ = CovarianceForm::automatic) const override {
     JointViscosityPrediction out;
     const auto n = static_cast<Eigen::Index>(q.size());
     for (const auto& x : q) out.points.push_back(predict(x.phi, x.capillary_number, x.viscosity_ratio));
-    out.covariance.resize(n, n);
+    out.covariance.full.resize(n, n);
     for (Eigen::Index i = 0; i < n; ++i)
       for (Eigen::Index j = 0; j < n; ++j)
-        out.covariance(i, j) = out.points[i].sd * out.points[j].sd * correlation(q[i].phi, q[j].phi);
+        out.covariance.full(i, j) = out.points[i].sd * out.points[j].sd * correlation(q[i].phi, q[j].phi);
     return out;
   }
   double correlation(double a, double b) const { return std::exp(-std::abs(a - b) / (0.1 + 0.2 * offset_)); }
@@ -174,24 +174,25 @@ TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryP
   for (double c : {0.75, 0.6}) {
     const double t = c == 0.75 ? 0.0 : 0.4;  // 0.6 lies 40 % of the way from 0.5 to 0.75
     const std::size_t lower = c == 0.75 ? 1 : 0;
+    const Eigen::MatrixXd p_covariance = plain.predict_joint(q, {c}).covariance.dense();
+    const Eigen::MatrixXd b_covariance = boxed.predict_joint(q, {c}).covariance.dense();
     const JointViscosityPrediction p = plain.predict_joint(q, {c});
-    const JointViscosityPrediction b = boxed.predict_joint(q, {c});
     for (std::size_t i = 0; i < q.size(); ++i) {
       const ViscosityPrediction single = plain.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
       const ViscosityPrediction single_boxed = boxed.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
       EXPECT_EQ(p.points[i].eta_re, single.eta_re);
-      EXPECT_NEAR(p.covariance(i, i), single.sd * single.sd, 1e-15);
-      EXPECT_NEAR(b.covariance(i, i), single_boxed.sd * single_boxed.sd, 1e-13);  // the diagonal is predict's sd^2
+      EXPECT_NEAR(p_covariance(i, i), single.sd * single.sd, 1e-15);
+      EXPECT_NEAR(b_covariance(i, i), single_boxed.sd * single_boxed.sd, 1e-13);  // the diagonal is predict's sd^2
       for (std::size_t j = 0; j < q.size(); ++j) {
         const double r = (1.0 - t) * known[lower]->correlation(q[i].phi, q[j].phi) +
                          t * known[lower + 1]->correlation(q[i].phi, q[j].phi);
-        const double sd_i = std::sqrt(p.covariance(i, i)), sd_j = std::sqrt(p.covariance(j, j));
-        EXPECT_NEAR(p.covariance(i, j), sd_i * sd_j * r, 1e-14) << c << " " << i << " " << j;
+        const double sd_i = std::sqrt(p_covariance(i, i)), sd_j = std::sqrt(p_covariance(j, j));
+        EXPECT_NEAR(p_covariance(i, j), sd_i * sd_j * r, 1e-14) << c << " " << i << " " << j;
         // Boxed: the chain rule scales each sd by (1 + beta) eta^beta, beta's error adds g g^T.
         const double eta_i = p.points[i].eta_re, eta_j = p.points[j].eta_re;
         const double slope_i = 1.1 * std::pow(eta_i, 0.1), slope_j = 1.1 * std::pow(eta_j, 0.1);
         const double g_i = std::pow(eta_i, 1.1) * std::log(eta_i), g_j = std::pow(eta_j, 1.1) * std::log(eta_j);
-        EXPECT_NEAR(b.covariance(i, j), slope_i * slope_j * p.covariance(i, j) + 0.07 * 0.07 * g_i * g_j, 1e-12);
+        EXPECT_NEAR(b_covariance(i, j), slope_i * slope_j * p_covariance(i, j) + 0.07 * 0.07 * g_i * g_j, 1e-12);
       }
     }
   }
@@ -301,7 +302,7 @@ TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
   const std::vector<ViscosityQuery> q = {{0.2, 0.5, 5.0}, {0.3, 0.5, 5.0}};
   const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {0.6});
   EXPECT_EQ(a.points[1].eta_re, b.points[1].eta_re);
-  EXPECT_EQ(a.covariance(0, 1), b.covariance(0, 1));
+  EXPECT_EQ(a.covariance.dense()(0, 1), b.covariance.dense()(0, 1));
   EXPECT_THROW(FixedNuisanceModel(f, "offset_c", 1.2), std::invalid_argument);  // outside 0.45 .. 1.05
   EXPECT_THROW(FixedNuisanceModel(f, "beta", 0.1), std::invalid_argument);      // no such nuisance here
 }

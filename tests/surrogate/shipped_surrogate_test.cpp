@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "surrogate/offset_family_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "surrogate/trend_check.hpp"
@@ -97,6 +99,46 @@ TEST(ShippedSurrogateFamily, HoldsTheShippedSurrogateAndFallsWithTheOffset) {
         previous = eta;
       }
     }
+}
+
+// The likelihood of a 300-point sample (four hematocrits, shear rates 40-1000 1/s) under the
+// shipped family's low-rank covariance against its exact one, with 3 % measurement errors:
+// the same to 0.01 in ln L (a likelihood ratio within 1 %) at offsets in and between members.
+TEST(ShippedSurrogateFamily, LowRankLikelihoodIsTheExactOne) {
+  const OffsetFamilyModel family = load_surrogate_family(kLibrary / "surrogate_family.json");
+  const auto log_likelihood = [](const Eigen::MatrixXd& sigma, const Eigen::VectorXd& r) {
+    const Eigen::LLT<Eigen::MatrixXd> llt(sigma);
+    return -0.5 * (llt.matrixL().solve(r).squaredNorm() + 2.0 * llt.matrixLLT().diagonal().array().log().sum());
+  };
+  const auto sample = [](int per_line) {
+    std::vector<ViscosityQuery> queries;
+    for (const double phi : {0.25, 0.35, 0.45, 0.55})
+      for (int i = 0; i < per_line; ++i) {
+        const double shear_rate = 40.0 * std::pow(25.0, i / (per_line - 1.0));
+        queries.push_back({phi, 1.2e-3 * shear_rate * 4e-6 / 1.3e-6, 5.0});  // Ca at G_s 1.3 uN/m
+      }
+    return queries;
+  };
+  for (const double offset : {0.75, 0.62}) {
+    const std::vector<ViscosityQuery> queries = sample(75);
+    const JointViscosityPrediction exact = family.predict_joint(queries, {offset}, CovarianceForm::exact);
+    const JointViscosityPrediction low = family.predict_joint(queries, {offset}, CovarianceForm::low_rank);
+    ASSERT_TRUE(exact.covariance.dense_is_cheaper());
+    ASSERT_FALSE(low.covariance.dense_is_cheaper());
+    const auto n = static_cast<Eigen::Index>(queries.size());
+    Eigen::VectorXd noise(n), r(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double eta = exact.points[static_cast<std::size_t>(i)].eta_re;
+      noise(i) = std::pow(0.03 * eta, 2);
+      r(i) = 0.04 * eta * std::sin(0.7 * static_cast<double>(i));  // a residual pattern of the data's size
+    }
+    const Eigen::MatrixXd e = exact.covariance.dense() + Eigen::MatrixXd(noise.asDiagonal());
+    const Eigen::MatrixXd l = low.covariance.dense() + Eigen::MatrixXd(noise.asDiagonal());
+    EXPECT_NEAR(log_likelihood(l, r), log_likelihood(e, r), 0.01) << "offset " << offset;
+    // Its rank is set by the span of the points in length scales: twice the points, hardly more.
+    const Eigen::Index rank_twice = family.predict_joint(sample(150), {offset}, CovarianceForm::low_rank).covariance.rank();
+    EXPECT_LE(rank_twice, low.covariance.rank() + low.covariance.rank() / 10) << "offset " << offset;
+  }
 }
 
 }  // namespace

@@ -73,18 +73,19 @@ TEST(ViscositySurrogate, JointPredictionCorrelatesNeighbours) {
   const ViscositySurrogate& s = fitted_surrogate();
   const std::vector<ViscosityQuery> q = {{0.2, 0.1, 2.0}, {0.21, 0.11, 2.0}, {0.35, 0.7, 8.0}, {0.08, 0.02, 1.0}};
   const JointViscosityPrediction joint = s.predict_joint(q, {});
+  const Eigen::MatrixXd covariance = joint.covariance.dense();
   for (std::size_t i = 0; i < q.size(); ++i) {
     const ViscosityPrediction single = s.predict(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio);
     EXPECT_EQ(joint.points[i].eta_re, single.eta_re);
-    EXPECT_NEAR(joint.covariance(i, i), single.sd * single.sd, 1e-12 * single.sd * single.sd + 1e-300);
+    EXPECT_NEAR(covariance(i, i), single.sd * single.sd, 1e-12 * single.sd * single.sd + 1e-300);
   }
   const auto correlation = [&](int i, int j) {
-    return joint.covariance(i, j) / std::sqrt(joint.covariance(i, i) * joint.covariance(j, j));
+    return covariance(i, j) / std::sqrt(covariance(i, i) * covariance(j, j));
   };
   EXPECT_GT(correlation(0, 1), 0.8);
   EXPECT_LT(std::abs(correlation(0, 2)), correlation(0, 1));
   EXPECT_LT(std::abs(correlation(2, 3)), correlation(0, 1));
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(joint.covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
   EXPECT_GT(eigen.eigenvalues().minCoeff(), -1e-12 * eigen.eigenvalues().maxCoeff());
 }
 
@@ -323,7 +324,7 @@ TEST(ViscositySurrogate, PredictiveSdScaleIsTheLeaveOneOutRmsWhenAboveOne) {
   const ViscosityPrediction a = fitted.predict(0.2, 0.1, 2.0), b = unscaled.predict(0.2, 0.1, 2.0);
   EXPECT_EQ(a.eta_re, b.eta_re);
   EXPECT_NEAR(a.sd, rms * b.sd, 1e-12 * a.sd);
-  EXPECT_NEAR(fitted.predict_joint({{0.2, 0.1, 2.0}}, {}).covariance(0, 0), a.sd * a.sd, 1e-12 * a.sd * a.sd);
+  EXPECT_NEAR(fitted.predict_joint({{0.2, 0.1, 2.0}}, {}).covariance.variances()(0), a.sd * a.sd, 1e-12 * a.sd * a.sd);
   const auto file = std::filesystem::temp_directory_path() / "rbcal_sd_scale_surrogate.json";
   save_surrogate(fitted, file);
   EXPECT_EQ(load_surrogate(file).predictive_sd_scale(), fitted.predictive_sd_scale());
