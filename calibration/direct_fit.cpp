@@ -6,7 +6,10 @@
 #include <array>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
+#include <deque>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -73,6 +76,32 @@ struct WeightedResidual {
 // (posterior.hpp) keeps the term; with it the fit is the posterior's mode, and the direct fit and
 // the MCMC answer the same question. Sigma_ref is Sigma at the start; K = 10 per point keeps the
 // root real unless det Sigma falls by a factor e^(10 n) from there.
+// The likelihood's last evaluations by parameter values, shared by the whitened residuals and the
+// normalisation: Ceres asks both blocks at the same points (every numerical-derivative step), and
+// each evaluation costs a joint prediction at every point.
+class JointEvaluationCache {
+ public:
+  using Key = std::array<double, 3 + kMaxModelNuisances>;
+  template <typename Compute>
+  WhitenedResiduals get(const Key& key, Compute compute) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      for (const auto& [k, value] : entries_)
+        if (k == key) return value;
+    }
+    WhitenedResiduals value = compute();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    entries_.emplace_front(key, value);
+    if (entries_.size() > kEntries) entries_.pop_back();
+    return value;
+  }
+
+ private:
+  static constexpr std::size_t kEntries = 4 * (3 + kMaxModelNuisances) + 4;  // one Jacobian's steps and more
+  std::mutex mutex_;
+  std::deque<std::pair<Key, WhitenedResiduals>> entries_;
+};
+
 // Parameters as the per-point residuals: ln G_s, ln lambda, ln eta0, the two nuisance blocks.
 struct JointResidualBlock {
   ViscosityObservation observation;
@@ -82,13 +111,18 @@ struct JointResidualBlock {
   bool normalisation = false;           // false: the whitened residuals; true: the normalisation
   double ln_reference_determinant = 0.0;
   static constexpr double kShiftPerPoint = 10.0;
+  std::shared_ptr<JointEvaluationCache> cache = std::make_shared<JointEvaluationCache>();
 
   WhitenedResiduals at(double const* const* parameters) const {
-    ViscosityObservation with = observation;
-    with.plasma_viscosity = std::exp(parameters[2][0]);
-    for (int k = 0; k < nuisances; ++k) with.nuisance.push_back(parameters[3 + k][0]);
-    return whiten(joint_residuals(with, points, std::exp(parameters[0][0]), std::exp(parameters[1][0]),
-                                  plasma_viscosity_is_parameter));
+    JointEvaluationCache::Key key;
+    for (std::size_t k = 0; k < key.size(); ++k) key[k] = parameters[k][0];
+    return cache->get(key, [&] {
+      ViscosityObservation with = observation;
+      with.plasma_viscosity = std::exp(parameters[2][0]);
+      for (int k = 0; k < nuisances; ++k) with.nuisance.push_back(parameters[3 + k][0]);
+      return whiten(joint_residuals(with, points, std::exp(parameters[0][0]), std::exp(parameters[1][0]),
+                                    plasma_viscosity_is_parameter));
+    });
   }
   bool operator()(double const* const* parameters, double* residuals) const {
     const WhitenedResiduals w = at(parameters);

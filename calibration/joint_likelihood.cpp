@@ -56,14 +56,29 @@ WhitenedResiduals whiten_dense(const Eigen::MatrixXd& covariance, const Eigen::V
   return out;
 }
 
-WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const Eigen::VectorXd& residual) {
-  WhitenedResiduals out;
+// The diagonal D of D + F F^T, with the dense path's jitter where it is not positive (the factor
+// alone is singular).
+Eigen::VectorXd positive_diagonal(const surrogate::JointCovariance& sigma) {
   Eigen::VectorXd d = sigma.diagonal;
-  if (d.size() == 0 || !(d.minCoeff() > 0.0)) {  // the factor alone is singular: the same jitter as dense
+  if (d.size() == 0 || !(d.minCoeff() > 0.0)) {
     const double jitter = 1e-12 * sigma.variances().mean();
-    if (d.size() == 0) d = Eigen::VectorXd::Zero(residual.size());
+    if (d.size() == 0) d = Eigen::VectorXd::Zero(sigma.size());
     d.array() += jitter > 0.0 ? jitter : 1e-300;
   }
+  return d;
+}
+
+bool finite_input(const JointResiduals& joint) {
+  const surrogate::JointCovariance& sigma = joint.covariance;
+  return (sigma.full.size() == 0 || sigma.full.allFinite()) &&
+         (sigma.diagonal.size() == 0 || sigma.diagonal.allFinite()) &&
+         (sigma.factor.size() == 0 || sigma.factor.allFinite()) && joint.residual.allFinite() &&
+         joint.residual.size() > 0 && sigma.size() == joint.residual.size();
+}
+
+WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const Eigen::VectorXd& residual) {
+  WhitenedResiduals out;
+  const Eigen::VectorXd d = positive_diagonal(sigma);
   const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
   const Eigen::VectorXd y = inverse_root.cwiseProduct(residual);
   if (sigma.rank() == 0) {  // independent errors
@@ -91,14 +106,28 @@ WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const
 }  // namespace
 
 WhitenedResiduals whiten(const JointResiduals& joint) {
+  if (!finite_input(joint)) return {};
+  return joint.covariance.dense_is_cheaper() ? whiten_dense(joint.covariance.dense(), joint.residual)
+                                             : whiten_low_rank(joint.covariance, joint.residual);
+}
+
+double joint_log_likelihood(const JointResiduals& joint) {
+  const double minus_infinity = -std::numeric_limits<double>::infinity();
   const surrogate::JointCovariance& sigma = joint.covariance;
-  const bool finite = (sigma.full.size() == 0 || sigma.full.allFinite()) &&
-                      (sigma.diagonal.size() == 0 || sigma.diagonal.allFinite()) &&
-                      (sigma.factor.size() == 0 || sigma.factor.allFinite());
-  if (!finite || !joint.residual.allFinite() || joint.residual.size() == 0 || sigma.size() != joint.residual.size())
-    return {};
-  return sigma.dense_is_cheaper() ? whiten_dense(sigma.dense(), joint.residual)
-                                  : whiten_low_rank(sigma, joint.residual);
+  if (!finite_input(joint)) return minus_infinity;
+  if (sigma.dense_is_cheaper() || sigma.rank() == 0) return whiten(joint).log_likelihood();
+  const Eigen::VectorXd d = positive_diagonal(sigma);
+  const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
+  const Eigen::VectorXd y = inverse_root.cwiseProduct(joint.residual);
+  const Eigen::MatrixXd w = inverse_root.asDiagonal() * sigma.factor;
+  Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(w.cols(), w.cols());
+  capacitance.selfadjointView<Eigen::Lower>().rankUpdate(w.transpose());
+  const Eigen::LLT<Eigen::MatrixXd> llt(capacitance);
+  if (llt.info() != Eigen::Success) return minus_infinity;
+  const double quadratic = y.squaredNorm() - llt.matrixL().solve(w.transpose() * y).squaredNorm();
+  const double log_determinant = d.array().log().sum() + 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  const double result = -0.5 * (quadratic + log_determinant + static_cast<double>(y.size()) * std::log(2.0 * std::numbers::pi));
+  return std::isfinite(result) ? result : minus_infinity;
 }
 
 }  // namespace rbcal::calibration

@@ -44,4 +44,10 @@ struct WhitenedResiduals {
 //   ln det Sigma = sum ln D_i + sum ln(1 + s_k^2).
 WhitenedResiduals whiten(const JointResiduals& joint);
 
+// The same log likelihood as whiten(joint).log_likelihood(), without the whitened residuals:
+// for a low-rank factor through the Cholesky factor of the r x r capacitance C = I + W^T W,
+//   r^T Sigma^-1 r = |y|^2 - |L_C^-1 W^T y|^2,  ln det Sigma = sum ln D_i + 2 sum ln (L_C)_kk,
+// (y = D^-1/2 r), a fraction of the cost of whitening; what the MCMC asks for at every step.
+double joint_log_likelihood(const JointResiduals& joint);
+
 }  // namespace rbcal::calibration

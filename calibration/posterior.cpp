@@ -126,8 +126,8 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
   if (options_.reject_outside_model_range)
     for (const auto& point : points_)
       if (!at.inside_range(point, shear_modulus, lambda_value)) return -std::numeric_limits<double>::infinity();
-  return whiten(joint_residuals(at, points_, shear_modulus, lambda_value, plasma_viscosity_index_ >= 0, sigma_d))
-      .log_likelihood();
+  return joint_log_likelihood(
+      joint_residuals(at, points_, shear_modulus, lambda_value, plasma_viscosity_index_ >= 0, sigma_d));
 }
 
 double LogPosterior::operator()(const Eigen::VectorXd& theta) const {

@@ -36,6 +36,8 @@ TEST(JointLikelihood, LowRankWhiteningIsTheDenseLikelihood) {
   EXPECT_NEAR(a.whitened.squaredNorm(), b.whitened.squaredNorm(), 1e-9 * b.whitened.squaredNorm());
   EXPECT_NEAR(a.log_determinant, b.log_determinant, 1e-9 * std::abs(b.log_determinant));
   EXPECT_NEAR(a.log_likelihood(), b.log_likelihood(), 1e-9 * std::abs(b.log_likelihood()));
+  EXPECT_NEAR(joint_log_likelihood(low), b.log_likelihood(), 1e-9 * std::abs(b.log_likelihood()));
+  EXPECT_EQ(joint_log_likelihood(dense), b.log_likelihood());
 }
 
 // W Sigma W^T = I for the map r -> whitened: the whitened residuals are independent with unit variance.
@@ -59,8 +61,10 @@ TEST(JointLikelihood, IndependentErrorsAndASingularFactorAreHandled) {
   j = random_low_rank(10, 3, 4);
   j.covariance.diagonal.setZero();  // rank 3 < 10: singular without the jitter
   EXPECT_TRUE(whiten(j).ok);
+  EXPECT_NEAR(joint_log_likelihood(j), whiten(j).log_likelihood(), 1e-8 * std::abs(whiten(j).log_likelihood()));
   j.covariance.factor(2, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(whiten(j).ok);
+  EXPECT_EQ(joint_log_likelihood(j), -std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
