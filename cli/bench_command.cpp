@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/calibration_scaling.hpp"
 #include "bench/coupled_step.hpp"
 #include "bench/host_description.hpp"
 #include "bench/lattice_throughput.hpp"
@@ -19,6 +20,8 @@
 #include "formats/provenance.hpp"
 #include "rbcal/build_info.hpp"
 #include "solver/simulation/simulation_case.hpp"
+#include "surrogate/offset_family_file.hpp"
+#include "cli/data_folder.hpp"
 
 namespace rbcal::cli {
 
@@ -35,7 +38,41 @@ struct BenchOptions {
   int case_steps = 20;
   std::string backend = "cpu";
   std::string precision = "double";
+  std::vector<int> calibration_points;  // calibration mode: sample sizes
+  std::string surrogate;                // its model (default: the shipped one)
+  bool no_mcmc = false;
 };
+
+void run_calibration_bench(const BenchOptions& o) {
+  const std::string model_path = o.surrogate.empty() ? shipped_file("library/default/surrogate_family.json") : o.surrogate;
+  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(model_path);
+  bench::CalibrationScalingOptions options;
+  options.points = o.calibration_points;
+  options.mcmc = !o.no_mcmc;
+  std::printf("rbcal bench --calibration-points (rbcal %s, %d threads, host %s)\n  %s\n  model %s; samples drawn at G_s 2 uN/m, "
+              "5 hematocrits, 40-1000 1/s, 3 %% error; one run each\n",
+              build_info::git_revision, omp_get_max_threads(), formats::host_name().c_str(),
+              bench::describe_host().line().c_str(), model_path.c_str());
+  std::printf("| points | direct fit [s] | MCMC [s] | MCMC posterior evaluations | G_s direct [uN/m] | G_s MCMC [uN/m] |\n"
+              "|---|---|---|---|---|---|\n");
+  std::fflush(stdout);
+  const auto rows = bench::time_calibration_scaling(*model, options, [](const bench::CalibrationScalingRow& r) {
+    if (r.mcmc_seconds >= 0.0)
+      std::printf("| %d | %.2f | %.1f | %ld | %.3f | %.3f |\n", r.points, r.direct_seconds, r.mcmc_seconds,
+                  r.mcmc_evaluations, r.direct_shear_modulus * 1e6, r.mcmc_shear_modulus * 1e6);
+    else
+      std::printf("| %d | %.2f | - | - | %.3f | - |\n", r.points, r.direct_seconds, r.direct_shear_modulus * 1e6);
+    std::fflush(stdout);
+  });
+  if (!o.json_path.empty()) {
+    nlohmann::json j = {{"provenance", formats::provenance_block()}, {"threads", omp_get_max_threads()}, {"model", model_path}};
+    for (const auto& r : rows)
+      j["rows"].push_back({{"points", r.points}, {"direct_seconds", r.direct_seconds}, {"mcmc_seconds", r.mcmc_seconds},
+                           {"mcmc_evaluations", r.mcmc_evaluations}, {"direct_shear_modulus", r.direct_shear_modulus},
+                           {"mcmc_shear_modulus", r.mcmc_shear_modulus}});
+    formats::write_json_atomically(o.json_path, j);
+  }
+}
 
 void run_case_bench(const BenchOptions& o) {
   const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps,
@@ -56,6 +93,10 @@ void run_bench(const BenchOptions& o) {
   if (o.steps < 1 || o.rounds < 1) throw std::invalid_argument("--steps and --rounds must be >= 1");
   if (!(o.triad_mib > 0.0)) throw std::invalid_argument("--triad-mib must be positive");
   if (o.threads > 0) omp_set_num_threads(o.threads);
+  if (!o.calibration_points.empty()) {
+    run_calibration_bench(o);
+    return;
+  }
   if (!o.case_path.empty()) {
     run_case_bench(o);
     return;
@@ -135,6 +176,13 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--case-steps", opts->case_steps, "Case mode: timed steps (after 2 warm-up steps)")
       ->capture_default_str();
+  cmd->add_option("--calibration-points", opts->calibration_points,
+                  "Calibration mode: time the direct fit and the MCMC on samples of these sizes, e.g. 28,100,500,2000,10000")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--surrogate", opts->surrogate, "Calibration mode: the model (default: the shipped surrogate family)")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--no-mcmc", opts->no_mcmc, "Calibration mode: time the direct fit only");
   add_backend_option(cmd, opts->backend);
   cmd->add_option("--precision", opts->precision,
                   "Population storage of the lattice update: double, or float (32 bits, shifted; numerics.precision)")
