@@ -22,11 +22,14 @@
 
 namespace rbcal::calibration {
 
-// The most points of one sample that are fitted (the correlated likelihood's dense covariance
-// needs several copies of 8 n^2 bytes: about 4.5 GiB at this n), and the count above which a
-// warning says the MCMC will be slow (n^3 per likelihood evaluation).
-inline constexpr std::size_t kMaxFittedPoints = 10000;
+// The most points of one sample that are fitted, and the count above which a warning says the
+// MCMC will take minutes. The likelihood's memory grows linearly with the points
+// (kLikelihoodBytesPerPoint: the low-rank factor of the model's covariance, at most 1201
+// columns, in up to three copies, and each point's covariances with the runs of four
+// members); a sample that would need more than the host has available is refused too.
+inline constexpr std::size_t kMaxFittedPoints = 100000;
 inline constexpr std::size_t kSlowFittedPoints = 1000;
+inline constexpr double kLikelihoodBytesPerPoint = 8.0 * (3.0 * 1201.0 + 4.0 * 2.0 * 256.0);
 
 struct CalibrationJobOptions {
   std::filesystem::path data_file;       // rheometer CSV

@@ -1,9 +1,8 @@
 #include "solver/simulation/memory_estimate.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <sstream>
+#include <cstdio>
 
 #include "solver/lattice_units.hpp"
 #include "solver/membrane/cell_shapes.hpp"
@@ -43,18 +42,6 @@ std::uint64_t estimated_peak_bytes(const SimulationCase& c) {
   const double per_node = c.single_precision ? kBytesPerNode - 2.0 * 19.0 * 4.0 : kBytesPerNode;
   return static_cast<std::uint64_t>(kBaseBytes + per_node * nodes +
                                     kBytesPerMembraneNode * cells * static_cast<double>(cell.vertices.size()));
-}
-
-std::uint64_t available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ss(line);
-    std::string key;
-    std::uint64_t kib = 0;
-    if (ss >> key >> kib && key == "MemAvailable:") return kib * 1024;
-  }
-  return 0;
 }
 
 std::string memory_refusal(const SimulationCase& c, std::uint64_t available) {

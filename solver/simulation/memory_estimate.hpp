@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "formats/host_memory.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 namespace rbcal::solver {
@@ -14,9 +15,7 @@ namespace rbcal::solver {
 // plus about 13 MB, at 4a boxes of N_a 8 and 16 (memory_estimate.cpp), and the membranes.
 std::uint64_t estimated_peak_bytes(const SimulationCase& c);
 
-// MemAvailable of /proc/meminfo (the memory the kernel can give without swapping), or 0 when
-// unknown.
-std::uint64_t available_memory_bytes();
+using formats::available_memory_bytes;
 
 // Empty when the case fits in `available` bytes (0: unknown, always fits); otherwise the
 // refusal: how much it needs, the lattice, and the fields to change.
