@@ -3,7 +3,7 @@
 #   solver       <- formats
 #   surrogate    <- formats            (never solver/: the case files are the interface)
 #   calibration  <- surrogate, formats
-#   bench        <- solver, formats
+#   bench        <- solver, calibration, surrogate, formats (benchmarks of each)
 #   cli          <- everything
 #   python       <- calibration, surrogate, formats  (the Python module: no solver)
 # Run as: cmake -DSOURCE_DIR=... -P check_layering.cmake; fails naming file and include.
@@ -12,7 +12,7 @@ set(allowed_formats formats rbcal)
 set(allowed_solver solver formats)
 set(allowed_surrogate surrogate formats)
 set(allowed_calibration calibration surrogate formats)
-set(allowed_bench bench solver formats)
+set(allowed_bench bench solver calibration surrogate formats)
 set(allowed_cli cli bench calibration surrogate solver formats rbcal)
 set(allowed_python python calibration surrogate formats)
 set(violations "")
