@@ -39,7 +39,7 @@ struct PosteriorOptions {
   double lambda_max = 0.0;
   double discrepancy_prior_median = 0.05;  // sigma_d's prior median (5 % relative error)
   double discrepancy_prior_log_sd = 1.0;   // sd of ln sigma_d's prior
-  // true (the default since 2026-11-25, third session): theta where any point's (phi, Ca,
+  // true (the default): theta where any point's (phi, Ca,
   // lambda) leaves the model's range has zero posterior (the posterior is truncated to where
   // the model was built); false: the model is trusted to widen its own predictive sd outside
   // its range. The surrogate's extrapolation was measured: the default of 69 runs predicted new

@@ -18,14 +18,15 @@
 #      data/library/default/surrogate_family.json with the prior OFFSET +- OFFSET_SD
 #      (rbcal surrogate family), the model the calibration uses by default: the offset is
 #      then a nuisance parameter of every fit (docs/calibration.md). With BOX=auto (the
-#      default since 2026-11-25, third session) the family also carries the box correction
+#      default) the family also carries the box correction
 #      beta, its prior from the 8a/16a twin runs committed in data/cases/library_v2/results
 #      (scripts/box_twins.py), integrated out in every fit (docs/calibration.md); BOX=none
 #      leaves it out (docs/library.md, "The box twins"). SHARED_HYPERPARAMETERS=1 builds the
 #      members with the central surrogate's hyper-parameters (rbcal surrogate build
 #      --hyperparameters-of), and SAME_RUNS=1 with the central library's runs only (its phi_eff
 #      cut), so that they differ only by the mapping.
-# Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS default /work/runs/library_v2)
+# Usage: bash scripts/build-library-v2.sh [RUNS]   (RUNS: a folder of finished runs, RUNS/n6 and
+#   RUNS/n8, collected into data/library/v2 first; without it the committed runs are used)
 # Under either method:
 #   N8_LEAVE_OUT="ID ..." leaves those N_a 8 cases out of the build, and
 #   N8_USE_FILE=FILE uses only the N_a 8 cases FILE lists (one ID per line, # comments);
@@ -37,11 +38,11 @@
 # review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs="${1:-/work/runs/library_v2}"
+runs="${1:-}"
 rbcal=./build/bin/rbcal
 lib=data/library/v2
 for tier in n6 n8; do
-  [ -d "$runs/$tier" ] && bash scripts/collect-library.sh "$runs/$tier" "$lib/$tier"
+  [ -n "$runs" ] && [ -d "$runs/$tier" ] && bash scripts/collect-library.sh "$runs/$tier" "$lib/$tier"
 done
 count() { if [ -d "$1" ]; then find "$1" -name "*.json" | wc -l; else echo 0; fi; }
 n6=$(count "$lib/n6/cases")

@@ -12,7 +12,7 @@ interval 2 (shown equivalent to 1 on two dense cases), gamma_dot t to 40 with th
 exceed 0.05 min(1, (1 + lambda) / 2) (the stability cap of the v1 library,
 docs/library.md "Time-step limit").
 
-The gap tier (n8_h16, from the fifth session of 2026-11-24): every point at phi >=
+The gap tier (n8_h16, from 2026-11-24): every point at phi >=
 ROUND2_PHI again at N_a 8 in a 16a gap (box 6a x 16a x 6a), where the 8a box's layers
 do not set eta_re (docs/library.md, "Dense states in the 8a box are layered"), with the
 membrane moved by the interval's mean velocity (numerics.node_velocity, docs/performance.md).
@@ -35,7 +35,7 @@ PHI = (0.05, 0.55)
 LOG_CA = (math.log10(0.01), math.log10(3.2))
 LOG_LAMBDA = (-1.0, 1.0)
 LHS_POINTS, SUBSET, RESTARTS, SEED = 52, 20, 3000, 20261123
-# Round 2 of the N_a 8 tier (from the fourth session of 2026-11-24): every design point at
+# Round 2 of the N_a 8 tier (from 2026-11-24): every design point at
 # phi >= ROUND2_PHI. With only the maximin subset at N_a 8, the correction model carried the
 # large dense low-Ca drops of phi 0.55 down to phi 0.41 and flattened the shear thinning
 # there (docs/library.md, "Dense, low Ca to strain 40"); paired dense points leave the model

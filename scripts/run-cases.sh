@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs case files one after another into OUT/<stem>.out, resuming any that a killed session
+# Runs case files one after another into OUT/<stem>.out, resuming any that a killed run
 # left with a checkpoint, skipping those already finished: `bash scripts/run-cases.sh OUT
 # CASE.json...`. For long studies in the background (one per core, OMP_NUM_THREADS=1).
 # RBCAL names the executable (default build/bin/rbcal); point it at a copy so that
