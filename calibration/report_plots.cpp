@@ -226,7 +226,8 @@ void alpha_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem
                               plot + "\n"});
 }
 
-// (d) G_s vs Ca from the alpha method's matches, with their mean and the MCMC's interval.
+// (d) G_s vs Ca from the alpha method's matches, with their mean and the MCMC's interval; G_s on a
+// log axis, as it is inferred (an interval of 0.5-4.5 about points near 1 squeezes them on a linear one).
 void gs_ca_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, int index) {
   if (!s.alpha) return;
   std::vector<std::vector<double>> per_rate, per_ca;
@@ -257,7 +258,8 @@ void gs_ca_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem
     plot += parts[k];
   }
   b.add({stem + "_gs_vs_ca", header(s.sample.name + ": G_s per capillary number (alpha method)") +
-                                 "set logscale x\nset xlabel \"Ca = eta0 gamma_dot a / G_s [-]\"\n"
+                                 "set logscale xy\nset autoscale yfix\nset offsets 0, 0, graph 0.08, graph 0.08\nset ytics (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)\n"
+                                 "set xlabel \"Ca = eta0 gamma_dot a / G_s [-]\"\n"
                                  "set ylabel \"G_s [uN/m]\"\nplot " + plot + "\n"});
 }
 
