@@ -1,6 +1,6 @@
 #pragma once
 // What every calibration method works on: per sample, the plasma viscosity and the relative
-// viscosities eta_re = eta / eta0 of its suspension rows with propagated errors (DESIGN.md section 5).
+// viscosities eta_re = eta / eta0 of its suspension rows with propagated errors (docs/reference.md, "Rheometer CSV").
 #include <filesystem>
 #include <string>
 #include <vector>

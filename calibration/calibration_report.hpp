@@ -1,5 +1,5 @@
 #pragma once
-// A calibration report (DESIGN.md section 5, "Reports"): the results of the three methods for
+// A calibration report (docs/reference.md, "Calibration report"): the results of the three methods for
 // each sample, bundled with what produced them, and written into one folder as summary.json,
 // CSV tables (report_tables.hpp) and gnuplot plots (report_plots.hpp).
 // The structs hold SI values (as the methods return them); the files use the units a

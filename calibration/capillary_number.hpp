@@ -1,6 +1,6 @@
 #pragma once
 // The capillary number that links a measured shear rate to the simulated flows:
-// Ca = eta0 * gamma_dot * a / G_s (DESIGN.md section 2; seed study, Takeishi et al., eq. for Ca).
+// Ca = eta0 * gamma_dot * a / G_s (docs/reference.md; seed study, Takeishi et al., eq. for Ca).
 // SI units throughout: eta0 [Pa s], gamma_dot [1/s], a [m], G_s [N/m].
 
 namespace rbcal::calibration {

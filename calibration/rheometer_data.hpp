@@ -1,5 +1,5 @@
 #pragma once
-// Rheometer measurements as read from a CSV file (DESIGN.md section 5):
+// Rheometer measurements as read from a CSV file (docs/reference.md, "Rheometer CSV"):
 //   sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n
 // one row per mean value, kind `plasma` or `suspension`, several samples per file,
 // `#` lines for provenance. Viscosities are converted to SI (Pa s) on reading.

@@ -1,5 +1,5 @@
 // `rbcal bench`: the fluid update's throughput against a memory-bandwidth roofline
-// measured in the same run (STREAM triad), as DESIGN.md section 7 asks.
+// measured in the same run (STREAM triad), the bar the fluid update is held to.
 #include <omp.h>
 #include <unistd.h>
 

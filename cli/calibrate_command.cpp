@@ -1,7 +1,7 @@
 // `rbcal calibrate [DATA.csv]`: G_s (and optionally lambda) of each sample in a rheometer CSV by
 // the seed study's alpha method, the direct fit and the MCMC posterior, on a saved surrogate;
 // prints the estimates with their intervals and writes a report folder (summary.json, CSV
-// tables, plots). DESIGN.md sections 5-6. The policy lives in calibration/calibration_job.hpp.
+// tables, plots). docs/reference.md. The policy lives in calibration/calibration_job.hpp.
 #include <iostream>
 #include <memory>
 #include <sstream>

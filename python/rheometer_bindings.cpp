@@ -1,4 +1,4 @@
-// rbcal.read_rheometer_csv: a rheometer CSV (DESIGN.md section 5) checked as the command
+// rbcal.read_rheometer_csv: a rheometer CSV (docs/reference.md) checked as the command
 // line checks it; a bad file raises rbcal.RheometerDataError (a ValueError) whose
 // attributes file, line and field name the culprit.
 #include <pybind11/numpy.h>

@@ -1,6 +1,6 @@
 #pragma once
 // Conversion from the dimensionless description of a sheared suspension case to lattice
-// units (DESIGN.md section 2). The lattice spacing is dx = a / N_a, the plasma density
+// units (docs/reference.md, "Lattice units"). The lattice spacing is dx = a / N_a, the plasma density
 // is 1 and its relaxation time tau_out fixes nu_out = (tau_out - 1/2) / 3; the
 // Reynolds number Re = rho gamma_dot a^2 / eta0 then fixes the lattice shear rate
 // gamma_dot = Re nu_out / N_a^2, and Ca fixes the lattice shear modulus.

@@ -2,7 +2,7 @@
 // One finished solver case of a simulation library, as read from LIB/cases/<id>.json
 // (schema "rbcal.case/1", written by `rbcal simulate` / `rbcal library generate`).
 // Only what the surrogate needs is kept; the case file itself stays the interface
-// between solver/ and surrogate/ (DESIGN.md section 4). All quantities dimensionless.
+// between solver/ and surrogate/ (docs/reference.md). All quantities dimensionless.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // A simulation library: a folder LIB/ with finished cases in LIB/cases/<id>.json (plus
 // their <id>.csv time series, not read here), optionally LIB/plan.json (the planned
-// grid) and LIB/work/ (cases in progress, ignored). DESIGN.md section 4.
+// grid) and LIB/work/ (cases in progress, ignored). docs/reference.md, "Library folder".
 #include <filesystem>
 #include <optional>
 #include <vector>

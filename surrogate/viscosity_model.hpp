@@ -2,7 +2,7 @@
 // What the calibration needs from a model of the suspension's relative viscosity:
 // eta_re(phi, Ca, lambda) with a predictive standard deviation and derivatives.
 // The Gaussian-process surrogate implements it; tests implement it with known
-// analytic functions. All quantities are dimensionless (DESIGN.md section 2).
+// analytic functions. All quantities are dimensionless (docs/reference.md).
 
 #include <string>
 #include <vector>

@@ -135,7 +135,7 @@ Eigen::MatrixXd ViscositySurrogate::basis_jacobian(const Eigen::VectorXd& x) con
 bool ViscositySurrogate::inside_hull(double phi, double capillary_number, double viscosity_ratio) const {
   const Eigen::VectorXd x = input(phi, capillary_number, viscosity_ratio);
   for (int d = 0; d < 3; ++d) {
-    // phi: the seeded phi_actual scatters about the planned phi (DESIGN.md: within 0.5 %),
+    // phi: the seeded phi_actual scatters about the planned phi (the seeding stops within 0.5 %),
     // so the planned grid's edges count as inside up to 1 %; ln Ca, ln lambda: round-off only.
     const double tolerance = d == 0 ? 0.01 * std::max(std::abs(lower_(d)), std::abs(upper_(d)))
                                     : 1e-9 * (1.0 + std::abs(lower_(d)) + std::abs(upper_(d)));

@@ -1,6 +1,6 @@
 #pragma once
-// The Gaussian-process surrogate of the suspension's relative viscosity (DESIGN.md
-// section 4), implementing ViscosityModel for the calibration stage.
+// The Gaussian-process surrogate of the suspension's relative viscosity (docs/reference.md,
+// "Model files"), implementing ViscosityModel for the calibration stage.
 //
 // Model: universal kriging (gaussian_process.hpp) of y = ln eta_re over
 // x = (phi, ln Ca, ln lambda), phi being the cases' actual volume fraction, with

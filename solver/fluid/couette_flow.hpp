@@ -34,7 +34,7 @@ std::vector<double> streamwise_profile(const FluidLattice& fluid);
 CouetteResult run_to_steady_couette(FluidLattice& fluid, const CouetteRun& run);
 
 // The demonstration in physical units (`rbcal couette`): plasma between walls a gap H apart
-// sheared at gamma_dot, simulated on the lattice that DESIGN.md section 2 derives for N_a,
+// sheared at gamma_dot, simulated on the lattice that docs/reference.md derives for N_a,
 // tau and Re, and converted back to SI through dt = gamma_dot_lu / gamma_dot and the
 // stress scale eta0 gamma_dot / (nu gamma_dot_lu).
 struct CouetteDemo {

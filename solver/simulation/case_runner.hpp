@@ -1,6 +1,6 @@
 #pragma once
 // Runs one simulation case to its end strain and writes its outputs into a folder:
-//   result.json  the case, the derived lattice values, the results (DESIGN.md section 4)
+//   result.json  the case, the derived lattice values, the results (docs/reference.md)
 //                and provenance; written atomically (temporary file + rename)
 //   series.csv   one row per record interval: strain, eta_re (stresslet and wall), shape
 //                of the first cell, volume error, node Mach number

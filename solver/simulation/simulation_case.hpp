@@ -1,6 +1,6 @@
 #pragma once
 // One simulation case: cells, flow parameters, numerics and run length, read from and
-// written to the case JSON of DESIGN.md section 4 (schema "rbcal.case/1"). Lengths in
+// written to the case JSON of docs/reference.md (schema "rbcal.case/1"). Lengths in
 // cell radii a, times as shear strain gamma_dot t; see lattice_units.hpp for the
 // conversion to lattice units.
 #include <array>

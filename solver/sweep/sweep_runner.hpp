@@ -1,5 +1,5 @@
 #pragma once
-// Runs the cases of a sweep plan into a library folder (DESIGN.md section 4):
+// Runs the cases of a sweep plan into a library folder (docs/reference.md, "Library folder"):
 //   LIB/plan.json         the plan (a library belongs to one plan: checked on every start)
 //   LIB/cases/ID.json     finished case: the solver's result JSON, published last by rename
 //   LIB/cases/ID.csv      its time series

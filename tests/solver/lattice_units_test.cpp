@@ -1,4 +1,4 @@
-// Physical-to-lattice conversion of DESIGN.md section 2.
+// Physical-to-lattice conversion of docs/reference.md, "Lattice units".
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,7 +30,7 @@ TEST(LatticeUnits, PaperResolutionValues) {
 }
 
 TEST(LatticeUnits, DefaultReducedBendingMatchesSeedStudy) {
-  // DESIGN.md: k_b = 5e-19 J, G_s = 4 uN/m, a = 4 um gives kb_hat = 7.8125e-3.
+  // k_b = 5e-19 J, G_s = 4 uN/m, a = 4 um give kb_hat = 5e-19 / (16e-12 4e-6) = 7.8125e-3.
   EXPECT_NEAR(FlowParameters{}.reduced_bending, 7.8125e-3, 1e-12);
   const LatticeUnits u = derive_lattice_units(FlowParameters{}, LatticeResolution{});
   EXPECT_NEAR(u.bending_modulus / (256.0 * u.shear_modulus), 7.8125e-3, 1e-12);
