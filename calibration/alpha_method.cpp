@@ -185,7 +185,7 @@ AlphaMethodResult estimate_by_alpha_matching(const SampleData& sample, const sur
   for (double ca : options.capillary_numbers) {
     AlphaMatch match;
     match.capillary_number = ca;
-    if (ca < range.ca_min || ca > range.ca_max) {
+    if (!range.contains_ca(ca)) {
       std::ostringstream m;
       m << "Ca " << ca << " is outside the model's range [" << range.ca_min << ", " << range.ca_max << "]";
       match.message = m.str();

@@ -313,7 +313,7 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
       }
       edge_fit = true;
       for (std::size_t i = 0; i < sample.points.size(); ++i)
-        used[i] = sample.points[i].phi >= range.phi_min && sample.points[i].phi <= range.phi_max;
+        used[i] = range.contains_phi(sample.points[i].phi);
     }
     lo = ln_gs_lo;
     hi = ln_gs_hi;

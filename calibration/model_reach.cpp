@@ -115,7 +115,7 @@ ReachDiagnosis diagnose_reach(const std::vector<RelativeViscosityPoint>& points,
   for (const RelativeViscosityPoint& p : points) {
     PointReach r;
     r.point = p;
-    if (p.phi < range.phi_min || p.phi > range.phi_max) {
+    if (!range.contains_phi(p.phi)) {
       r.reach = Reach::phi_outside_model;
     } else {
       auto it = at_phi.find(p.phi);

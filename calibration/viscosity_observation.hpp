@@ -55,8 +55,7 @@ struct ViscosityObservation {
   bool inside_range(const RelativeViscosityPoint& point, double shear_modulus, double lambda) const {
     const surrogate::ParameterRange r = model->range();
     const double ca = capillary_number_at(point, shear_modulus);
-    return point.phi >= r.phi_min && point.phi <= r.phi_max && ca >= r.ca_min && ca <= r.ca_max &&
-           lambda >= r.lambda_min && lambda <= r.lambda_max;
+    return r.contains(point.phi, ca, lambda);
   }
 };
 

@@ -27,6 +27,14 @@ struct ParameterRange {
   double phi_min = 0.0, phi_max = 0.0;
   double ca_min = 0.0, ca_max = 0.0;
   double lambda_min = 0.0, lambda_max = 0.0;
+
+  // The one rule for "inside the model's range", bounds included, used by every method.
+  bool contains_phi(double phi) const { return phi >= phi_min && phi <= phi_max; }
+  bool contains_ca(double ca) const { return ca >= ca_min && ca <= ca_max; }
+  bool contains_lambda(double lambda) const { return lambda >= lambda_min && lambda <= lambda_max; }
+  bool contains(double phi, double ca, double lambda) const {
+    return contains_phi(phi) && contains_ca(ca) && contains_lambda(lambda);
+  }
 };
 
 // One point at which the model is asked: (phi, Ca, lambda).
