@@ -198,6 +198,20 @@ TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryP
   }
 }
 
+// The one range rule: bounds included, each axis on its own, NaN outside.
+TEST(ParameterRange, ContainsItsBoundsAndNothingBeyond) {
+  const ParameterRange r{0.05, 0.62, 0.01, 3.2, 0.1, 10.0};
+  EXPECT_TRUE(r.contains(0.05, 0.01, 0.1));
+  EXPECT_TRUE(r.contains(0.62, 3.2, 10.0));
+  EXPECT_FALSE(r.contains(0.621, 1.0, 5.0));
+  EXPECT_FALSE(r.contains(0.3, 3.3, 5.0));
+  EXPECT_FALSE(r.contains(0.3, 1.0, 0.09));
+  EXPECT_TRUE(r.contains_phi(0.3) && !r.contains_phi(0.04));
+  EXPECT_TRUE(r.contains_ca(0.5) && !r.contains_ca(0.009));
+  EXPECT_TRUE(r.contains_lambda(5.0) && !r.contains_lambda(10.5));
+  EXPECT_FALSE(r.contains(std::nan(""), 1.0, 5.0));
+}
+
 TEST(OffsetFamily, RangeIsTheMembersCommonRange) {
   std::vector<OffsetFamilyMember> members;
   members.push_back({0.6, std::make_shared<KnownMember>(0.6, linear, ParameterRange{0.05, 0.62, 0.01, 3.2, 0.1, 10.0})});
