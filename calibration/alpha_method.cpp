@@ -1,6 +1,6 @@
 #include "calibration/alpha_method.hpp"
 
-#include "calibration/curve_interpolation.hpp"
+#include "calibration/detail/curve_interpolation.hpp"
 
 #include <algorithm>
 #include <cmath>

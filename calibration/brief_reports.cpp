@@ -6,7 +6,7 @@
 #include <string>
 
 #include "calibration/calibration_report.hpp"
-#include "calibration/units.hpp"
+#include "calibration/detail/units.hpp"
 
 namespace rbcal::calibration {
 

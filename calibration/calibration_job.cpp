@@ -20,7 +20,7 @@
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
-#include "calibration/units.hpp"
+#include "calibration/detail/units.hpp"
 #include "formats/host_memory.hpp"
 #include "formats/short_number.hpp"
 #include "surrogate/fixed_nuisance_model.hpp"

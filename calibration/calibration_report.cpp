@@ -4,10 +4,10 @@
 
 #include <stdexcept>
 
-#include "calibration/report_html.hpp"
-#include "calibration/report_plots.hpp"
+#include "calibration/detail/report_html.hpp"
+#include "calibration/detail/report_plots.hpp"
 #include "calibration/report_summary.hpp"
-#include "calibration/report_tables.hpp"
+#include "calibration/detail/report_tables.hpp"
 #include "formats/json_file.hpp"
 
 namespace rbcal::calibration {

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "calibration/calibration_report.hpp"
-#include "calibration/units.hpp"
+#include "calibration/detail/units.hpp"
 
 namespace rbcal::calibration {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "calibration/chain_diagnostics.hpp"
-#include "calibration/independence_sampler.hpp"
+#include "calibration/detail/independence_sampler.hpp"
 #include "formats/short_number.hpp"
 
 #ifdef _OPENMP

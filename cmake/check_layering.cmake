@@ -6,6 +6,8 @@
 #   bench        <- solver, calibration, surrogate, formats (benchmarks of each)
 #   cli          <- everything
 #   python       <- calibration, surrogate, formats  (the Python module: no solver)
+# and each module's detail/ folder is its own: no other module includes from it, and no public
+# header of the module itself does (a public header that did would hand it on). Tests may.
 # Run as: cmake -DSOURCE_DIR=... -P check_layering.cmake; fails naming file and include.
 cmake_minimum_required(VERSION 3.22)
 set(allowed_formats formats rbcal)
@@ -22,9 +24,16 @@ foreach(module formats solver surrogate calibration bench cli python)
     file(STRINGS "${source}" includes REGEX "^#include \"[a-z_]+/")
     foreach(line IN LISTS includes)
       string(REGEX REPLACE "^#include \"([a-z_]+)/.*" "\\1" target "${line}")
+      file(RELATIVE_PATH shown "${SOURCE_DIR}" "${source}")
       if(NOT target IN_LIST allowed_${module})
-        file(RELATIVE_PATH shown "${SOURCE_DIR}" "${source}")
         string(APPEND violations "\n  ${shown}: ${line} (${module}/ may include ${allowed_${module}})")
+      endif()
+      if(line MATCHES "^#include \"[a-z_]+/detail/")
+        if(NOT target STREQUAL module)
+          string(APPEND violations "\n  ${shown}: ${line} (another module's detail/)")
+        elseif(shown MATCHES "\\.hpp$" AND NOT shown MATCHES "/detail/")
+          string(APPEND violations "\n  ${shown}: ${line} (a public header includes a detail/ one)")
+        endif()
       endif()
     endforeach()
   endforeach()

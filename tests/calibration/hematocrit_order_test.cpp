@@ -57,7 +57,7 @@ TEST(HematocritOrder, FindsTheTwoFlaggedPointsOfThePublishedSample) {
 // The curve sorted once and read by binary search gives, at every rate, what reading the
 // points in order gives: log-log interpolation between the neighbours, the first point at a
 // repeated lowest rate, the measured value at a measured rate, nothing outside.
-#include "calibration/curve_interpolation.hpp"
+#include "calibration/detail/curve_interpolation.hpp"
 
 TEST(SortedCurve, ReadsWhatTheNeighboursGiveAtAnyRate) {
   const std::vector<RelativeViscosityPoint> curve = {point(0.4, 100, 4.0, 3), point(0.4, 10, 6.0, 1),

@@ -10,7 +10,7 @@
 
 #include <boost/math/distributions/gamma.hpp>
 
-#include "calibration/independence_sampler.hpp"
+#include "calibration/detail/independence_sampler.hpp"
 #include "calibration/mcmc_sampling.hpp"
 
 using namespace rbcal::calibration;

@@ -18,8 +18,8 @@
 #include "calibration/direct_fit.hpp"
 #include "calibration/mcmc_calibration.hpp"
 #include "calibration/predictive_bands.hpp"
-#include "calibration/report_plots.hpp"
-#include "calibration/report_tables.hpp"
+#include "calibration/detail/report_plots.hpp"
+#include "calibration/detail/report_tables.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "synthetic_sample.hpp"
 

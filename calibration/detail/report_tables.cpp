@@ -1,4 +1,4 @@
-#include "calibration/report_tables.hpp"
+#include "calibration/detail/report_tables.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "calibration/units.hpp"
+#include "calibration/detail/units.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {

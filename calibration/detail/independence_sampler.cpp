@@ -1,4 +1,4 @@
-#include "calibration/independence_sampler.hpp"
+#include "calibration/detail/independence_sampler.hpp"
 
 #include <cmath>
 #include <stdexcept>

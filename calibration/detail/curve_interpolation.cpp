@@ -1,4 +1,4 @@
-#include "calibration/curve_interpolation.hpp"
+#include "calibration/detail/curve_interpolation.hpp"
 
 #include <algorithm>
 #include <cmath>

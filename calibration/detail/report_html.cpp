@@ -1,4 +1,4 @@
-#include "calibration/report_html.hpp"
+#include "calibration/detail/report_html.hpp"
 
 #include <fstream>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "calibration/report_plots.hpp"
+#include "calibration/detail/report_plots.hpp"
 
 #include <sys/wait.h>
 
@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "calibration/quantiles.hpp"
-#include "calibration/report_tables.hpp"
-#include "calibration/units.hpp"
+#include "calibration/detail/report_tables.hpp"
+#include "calibration/detail/units.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
