@@ -77,14 +77,14 @@ Eigen::MatrixXd kernel_between(const Matern52Kernel& kernel, const Eigen::Matrix
   Eigen::MatrixXd k(a.rows(), b.rows());
   if (derivative_factor) derivative_factor->resize(a.rows(), b.rows());
   Eigen::ArrayXd r2(a.rows()), u(a.rows()), e(a.rows());
-  const double s2 = kernel.signal_variance, root5 = std::sqrt(5.0);
+  const double root5 = std::sqrt(5.0);
   for (Eigen::Index j = 0; j < b.rows(); ++j) {
     r2.setZero();
     for (Eigen::Index d = 0; d < a.cols(); ++d) r2 += (a.col(d).array() - b(j, d)).square();
     u = root5 * r2.sqrt();
     e = (-u).exp();
-    k.col(j) = s2 * (1.0 + u + u.square() / 3.0) * e;  // of_scaled_distance
-    if (derivative_factor) derivative_factor->col(j) = s2 * (5.0 / 3.0) * (1.0 + u) * e;
+    k.col(j) = kernel.value_from(u, e).matrix();
+    if (derivative_factor) derivative_factor->col(j) = kernel.derivative_factor_from(u, e).matrix();
   }
   return k;
 }
@@ -111,17 +111,13 @@ double GaussianProcess::latent_variance(const Eigen::VectorXd& x, const Eigen::V
   return variance_given(cross_covariance(x), h_at_x);
 }
 
-Eigen::MatrixXd GaussianProcess::cross_covariances(const Eigen::MatrixXd& x_rows, Eigen::MatrixXd* derivative_factor) const {
-  return kernel_between(kernel_, scaled_points_by_dimension_,
-                        x_rows * kernel_.length_scales.cwiseInverse().asDiagonal(), derivative_factor);
-}
-
 GaussianProcessPredictions GaussianProcess::predict_many(const Eigen::MatrixXd& x_rows, const Eigen::MatrixXd& h_rows,
                                                          LatentCovariance covariance) const {
   const Eigen::Index q = x_rows.rows(), d = x_rows.cols();
   if (h_rows.rows() != q) throw std::invalid_argument("GaussianProcess: one basis row per query point needed");
+  const Eigen::MatrixXd scaled = x_rows * kernel_.length_scales.cwiseInverse().asDiagonal();
   Eigen::MatrixXd factor;
-  const Eigen::MatrixXd k_star = cross_covariances(x_rows, &factor);
+  const Eigen::MatrixXd k_star = kernel_between(kernel_, scaled_points_by_dimension_, scaled, &factor);  // n x q
   GaussianProcessPredictions p;
   p.mean = h_rows * beta_ + k_star.transpose() * alpha_;  // eq. 2.41
   // d k_i / d x_j = -factor_i (z_j - p_ij) / l_j: sum_i alpha_i factor_i (z_j - p_ij), scaled by -1/l_j.
@@ -129,8 +125,7 @@ GaussianProcessPredictions GaussianProcess::predict_many(const Eigen::MatrixXd& 
   p.kernel_gradient.resize(q, d);
   for (Eigen::Index j = 0; j < d; ++j) {
     const Eigen::VectorXd weighted_point = factor.transpose() * alpha_.cwiseProduct(scaled_points_by_dimension_.col(j));
-    const Eigen::VectorXd z = x_rows.col(j) / kernel_.length_scales(j);
-    p.kernel_gradient.col(j) = -(z.cwiseProduct(weight) - weighted_point) / kernel_.length_scales(j);
+    p.kernel_gradient.col(j) = -(scaled.col(j).cwiseProduct(weight) - weighted_point) / kernel_.length_scales(j);
   }
   const Eigen::MatrixXd v = k_cholesky_.matrixL().solve(k_star);
   const Eigen::MatrixXd r = h_rows.transpose() - k_inverse_basis_.transpose() * k_star;  // R = h* - H^T K^-1 k*
@@ -142,7 +137,6 @@ GaussianProcessPredictions GaussianProcess::predict_many(const Eigen::MatrixXd& 
           .transpose();
   p.variance = exact_variance.cwiseMax(0.0);
   if (covariance == LatentCovariance::exact) {  // eq. 2.42 for every pair
-    const Eigen::MatrixXd scaled = x_rows * kernel_.length_scales.cwiseInverse().asDiagonal();
     p.covariance.full = kernel_between(kernel_, scaled, scaled, nullptr);
     p.covariance.full.noalias() -= v.transpose() * v;
     p.covariance.full.noalias() += mean_part.transpose() * mean_part;
@@ -150,7 +144,6 @@ GaussianProcessPredictions GaussianProcess::predict_many(const Eigen::MatrixXd& 
     // Pivoted Cholesky of eq. 2.42's matrix, one column at a time where the unexplained variance
     // is largest (Harbrecht, Peters & Schneider 2012, Appl. Numer. Math. 62:428), until none
     // exceeds kLowRankTolerance; the rest is kept on the diagonal.
-    const Eigen::MatrixXd scaled = x_rows * kernel_.length_scales.cwiseInverse().asDiagonal();
     Eigen::VectorXd remaining = exact_variance.cwiseMax(0.0);
     const Eigen::Index most = std::min<Eigen::Index>(q, kLowRankMaxColumns);
     Eigen::MatrixXd g(q, most);

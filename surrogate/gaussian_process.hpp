@@ -119,9 +119,6 @@ class GaussianProcess {
   Eigen::MatrixXd projection() const;  // P
   Eigen::VectorXd cross_covariance(const Eigen::VectorXd& x) const;
   double variance_given(const Eigen::VectorXd& k_star, const Eigen::VectorXd& h_at_x) const;
-  // k(x_j, training point i) for the rows x_j of x_rows (n x q); derivative_factor, if given,
-  // receives the kernel's derivative factor at the same pairs.
-  Eigen::MatrixXd cross_covariances(const Eigen::MatrixXd& x_rows, Eigen::MatrixXd* derivative_factor = nullptr) const;
 
   GaussianProcessData data_;
   GaussianProcessHyperparameters hyperparameters_;

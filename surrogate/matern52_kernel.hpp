@@ -14,10 +14,21 @@ struct Matern52Kernel {
   double signal_variance = 1.0;   // s2
   Eigen::VectorXd length_scales;  // l_d > 0
 
+  // k and the derivatives' common factor in terms of u = sqrt5 r and e = exp(-u): one formula
+  // for single values (double) and for whole columns of them (Eigen arrays).
+  template <typename T>
+  T value_from(const T& u, const T& e) const {
+    return signal_variance * (1.0 + u + u * u / 3.0) * e;
+  }
+  template <typename T>
+  T derivative_factor_from(const T& u, const T& e) const {
+    return signal_variance * (5.0 / 3.0) * (1.0 + u) * e;
+  }
+
   // s2 (5/3)(1 + sqrt5 r) exp(-sqrt5 r): the common factor of the derivatives below.
   double derivative_factor(double r) const {
     const double u = std::sqrt(5.0) * r;
-    return signal_variance * (5.0 / 3.0) * (1.0 + u) * std::exp(-u);
+    return derivative_factor_from(u, std::exp(-u));
   }
 
   double scaled_distance(const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& b) const {
@@ -31,7 +42,7 @@ struct Matern52Kernel {
   // k as a function of the scaled distance r.
   double of_scaled_distance(double r) const {
     const double u = std::sqrt(5.0) * r;
-    return signal_variance * (1.0 + u + u * u / 3.0) * std::exp(-u);
+    return value_from(u, std::exp(-u));
   }
 
   // d k(a, b) / d ln l_d = s2 (5/3)(1 + sqrt5 r) exp(-sqrt5 r) ((a_d - b_d) / l_d)^2.
