@@ -144,17 +144,22 @@ bool ViscositySurrogate::inside_hull(double phi, double capillary_number, double
   return true;
 }
 
+ViscosityPrediction ViscositySurrogate::prediction_from(double mean, double variance, const Eigen::VectorXd& mean_gradient,
+                                                        double phi, double capillary_number, double viscosity_ratio) const {
+  ViscosityPrediction out;
+  out.eta_re = std::exp(mean);
+  out.sd = out.eta_re * predictive_sd_scale_ * std::sqrt(variance);  // delta method: sd(exp y) ~ exp(E y) sd(y)
+  out.d_phi = out.eta_re * mean_gradient(0);
+  out.d_ln_ca = out.eta_re * mean_gradient(1);
+  out.d_ln_lambda = out.eta_re * mean_gradient(2);
+  out.inside_hull = inside_hull(phi, capillary_number, viscosity_ratio);
+  return out;
+}
+
 ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_number, double viscosity_ratio) const {
   const Eigen::VectorXd x = input(phi, capillary_number, viscosity_ratio);
   const GaussianProcessPrediction p = process_.predict(x, basis(x), basis_jacobian(x));
-  ViscosityPrediction out;
-  out.eta_re = std::exp(p.mean);
-  out.sd = out.eta_re * predictive_sd_scale_ * std::sqrt(p.variance);  // delta method: sd(exp y) ~ exp(E y) sd(y)
-  out.d_phi = out.eta_re * p.mean_gradient(0);
-  out.d_ln_ca = out.eta_re * p.mean_gradient(1);
-  out.d_ln_lambda = out.eta_re * p.mean_gradient(2);
-  out.inside_hull = inside_hull(phi, capillary_number, viscosity_ratio);
-  return out;
+  return prediction_from(p.mean, p.variance, p.mean_gradient, phi, capillary_number, viscosity_ratio);
 }
 
 std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vector<ViscosityQuery>& queries,
@@ -169,19 +174,14 @@ std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vec
   }
   GaussianProcessPredictions p = process_.predict_many(x_rows, h_rows, form);
   if (covariance) *covariance = std::move(p.covariance);
-  std::vector<ViscosityPrediction> out(queries.size());
+  std::vector<ViscosityPrediction> out;
+  out.reserve(queries.size());
   for (Eigen::Index i = 0; i < n; ++i) {
     const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
     const Eigen::VectorXd x = x_rows.row(i).transpose();
     const Eigen::VectorXd gradient =
         p.kernel_gradient.row(i).transpose() + basis_jacobian(x).transpose() * process_.mean_coefficients();
-    ViscosityPrediction& o = out[static_cast<std::size_t>(i)];  // as predict
-    o.eta_re = std::exp(p.mean(i));
-    o.sd = o.eta_re * predictive_sd_scale_ * std::sqrt(p.variance(i));
-    o.d_phi = o.eta_re * gradient(0);
-    o.d_ln_ca = o.eta_re * gradient(1);
-    o.d_ln_lambda = o.eta_re * gradient(2);
-    o.inside_hull = inside_hull(q.phi, q.capillary_number, q.viscosity_ratio);
+    out.push_back(prediction_from(p.mean(i), p.variance(i), gradient, q.phi, q.capillary_number, q.viscosity_ratio));
   }
   return out;
 }

@@ -103,6 +103,9 @@ class ViscositySurrogate final : public ViscosityModel {
   static Terms terms_for(const std::vector<TrainingCase>& cases);
   static GaussianProcessData process_data(const std::vector<TrainingCase>& cases, Terms terms);
   static Eigen::VectorXd basis_of(const Eigen::VectorXd& x, Terms terms);
+  // The prediction of eta_re from the process's ln eta_re at a point (mean, latent variance, gradient).
+  ViscosityPrediction prediction_from(double mean, double variance, const Eigen::VectorXd& mean_gradient, double phi,
+                                      double capillary_number, double viscosity_ratio) const;
   // predict_many, and the process's joint covariance of ln eta_re in the form asked.
   std::vector<ViscosityPrediction> predict_rows(const std::vector<ViscosityQuery>& queries, LatentCovariance form,
                                                 JointCovariance* covariance) const;
