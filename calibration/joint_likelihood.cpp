@@ -31,11 +31,19 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
   return out;
 }
 
+namespace {
+
+// -1/2 (r^T Sigma^-1 r + ln det Sigma + n ln 2 pi); -inf unless finite.
+double gaussian_log_likelihood(double quadratic, double log_determinant, Eigen::Index n) {
+  const double result = -0.5 * (quadratic + log_determinant + static_cast<double>(n) * std::log(2.0 * std::numbers::pi));
+  return std::isfinite(result) ? result : -std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
 double WhitenedResiduals::log_likelihood() const {
   if (!ok) return -std::numeric_limits<double>::infinity();
-  const double result = -0.5 * (whitened.squaredNorm() + log_determinant +
-                                static_cast<double>(whitened.size()) * std::log(2.0 * std::numbers::pi));
-  return std::isfinite(result) ? result : -std::numeric_limits<double>::infinity();
+  return gaussian_log_likelihood(whitened.squaredNorm(), log_determinant, whitened.size());
 }
 
 namespace {
@@ -76,21 +84,36 @@ bool finite_input(const JointResiduals& joint) {
          joint.residual.size() > 0 && sigma.size() == joint.residual.size();
 }
 
+// D + F F^T scaled by D^-1/2: y = D^-1/2 r, W = D^-1/2 F, and the Gram matrix W^T W (lower half).
+struct ScaledLowRank {
+  Eigen::VectorXd y;
+  Eigen::MatrixXd w;
+  Eigen::MatrixXd gram;
+  double log_det_diagonal = 0.0;  // sum ln D_i
+
+  ScaledLowRank(const surrogate::JointCovariance& sigma, const Eigen::VectorXd& residual) {
+    const Eigen::VectorXd d = positive_diagonal(sigma);
+    const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
+    y = inverse_root.cwiseProduct(residual);
+    w = inverse_root.asDiagonal() * sigma.factor;
+    gram = Eigen::MatrixXd::Zero(w.cols(), w.cols());
+    if (w.cols() > 0) gram.selfadjointView<Eigen::Lower>().rankUpdate(w.transpose());
+    log_det_diagonal = d.array().log().sum();
+  }
+};
+
 WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const Eigen::VectorXd& residual) {
   WhitenedResiduals out;
-  const Eigen::VectorXd d = positive_diagonal(sigma);
-  const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
-  const Eigen::VectorXd y = inverse_root.cwiseProduct(residual);
+  const ScaledLowRank scaled(sigma, residual);
+  const Eigen::VectorXd& y = scaled.y;
+  const Eigen::MatrixXd& w = scaled.w;
   if (sigma.rank() == 0) {  // independent errors
     out.whitened = y;
-    out.log_determinant = d.array().log().sum();
+    out.log_determinant = scaled.log_det_diagonal;
     out.ok = out.whitened.allFinite() && std::isfinite(out.log_determinant);
     return out;
   }
-  const Eigen::MatrixXd w = inverse_root.asDiagonal() * sigma.factor;
-  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(w.cols(), w.cols());
-  gram.selfadjointView<Eigen::Lower>().rankUpdate(w.transpose());
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(scaled.gram);
   if (eigen.info() != Eigen::Success) return out;
   const Eigen::VectorXd s2 = eigen.eigenvalues().cwiseMax(0.0);
   Eigen::VectorXd g(s2.size());
@@ -98,7 +121,7 @@ WhitenedResiduals whiten_low_rank(const surrogate::JointCovariance& sigma, const
     g(k) = s2(k) > 1e-8 ? (1.0 / std::sqrt(1.0 + s2(k)) - 1.0) / s2(k) : -0.5 + 0.375 * s2(k);
   const Eigen::MatrixXd& v = eigen.eigenvectors();
   out.whitened = y + w * (v * g.cwiseProduct(v.transpose() * (w.transpose() * y)));
-  out.log_determinant = d.array().log().sum() + s2.array().log1p().sum();
+  out.log_determinant = scaled.log_det_diagonal + s2.array().log1p().sum();
   out.ok = out.whitened.allFinite() && std::isfinite(out.log_determinant);
   return out;
 }
@@ -116,18 +139,13 @@ double joint_log_likelihood(const JointResiduals& joint) {
   const surrogate::JointCovariance& sigma = joint.covariance;
   if (!finite_input(joint)) return minus_infinity;
   if (sigma.dense_is_cheaper() || sigma.rank() == 0) return whiten(joint).log_likelihood();
-  const Eigen::VectorXd d = positive_diagonal(sigma);
-  const Eigen::VectorXd inverse_root = d.cwiseSqrt().cwiseInverse();
-  const Eigen::VectorXd y = inverse_root.cwiseProduct(joint.residual);
-  const Eigen::MatrixXd w = inverse_root.asDiagonal() * sigma.factor;
-  Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(w.cols(), w.cols());
-  capacitance.selfadjointView<Eigen::Lower>().rankUpdate(w.transpose());
-  const Eigen::LLT<Eigen::MatrixXd> llt(capacitance);
+  ScaledLowRank scaled(sigma, joint.residual);
+  scaled.gram.diagonal().array() += 1.0;  // the capacitance I + W^T W
+  const Eigen::LLT<Eigen::MatrixXd> llt(scaled.gram);
   if (llt.info() != Eigen::Success) return minus_infinity;
-  const double quadratic = y.squaredNorm() - llt.matrixL().solve(w.transpose() * y).squaredNorm();
-  const double log_determinant = d.array().log().sum() + 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-  const double result = -0.5 * (quadratic + log_determinant + static_cast<double>(y.size()) * std::log(2.0 * std::numbers::pi));
-  return std::isfinite(result) ? result : minus_infinity;
+  const double quadratic = scaled.y.squaredNorm() - llt.matrixL().solve(scaled.w.transpose() * scaled.y).squaredNorm();
+  const double log_determinant = scaled.log_det_diagonal + 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  return gaussian_log_likelihood(quadratic, log_determinant, scaled.y.size());
 }
 
 }  // namespace rbcal::calibration
