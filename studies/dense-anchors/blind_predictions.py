@@ -13,13 +13,7 @@ import glob, json, math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from shipped_family import BETA_MEAN as beta_mean, BETA_SD as beta_sd, ROOT as root, V, g
-from shipped_family import member as family_member
-
-rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "rbcal")
-
-
-def member(phi, ca, lam, c):
-    return family_member(rbcal, phi, ca, lam, c)
+from shipped_family import member
 
 offsets = [0.45 + 0.075 * k for k in range(9)]
 weights = [math.exp(-0.5 * ((c - 0.75) / 0.15) ** 2) for c in offsets]

@@ -16,17 +16,9 @@ import os
 import re
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, HERE)
-from shipped_family import BETA_MEAN as beta, g
-from shipped_family import member as family_member
-
-rbcal = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
-
-
-def member(phi, ca, lam, c):
-    return family_member(rbcal, phi, ca, lam, c)[0]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from shipped_family import BETA_MEAN as beta, ROOT, g
+from shipped_family import member_eta as member
 
 
 runs = {}
