@@ -3,11 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <sstream>
+#include <filesystem>
 
+#include "calibration/calibration_job.hpp"
 #include "calibration/capillary_number.hpp"
-#include "calibration/direct_fit.hpp"
-#include "calibration/mcmc_calibration.hpp"
 #include "calibration/model_setup.hpp"
+#include "calibration/rheometer_data.hpp"
+#include "formats/json_file.hpp"
 
 namespace rbcal::bench {
 
@@ -46,31 +49,54 @@ calibration::SampleData sample_of(const surrogate::ViscosityModel& model, int n,
 
 }  // namespace
 
+std::string scaling_sample_csv(const calibration::SampleData& sample) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "# " << sample.name << ": drawn by rbcal bench --calibration-points from its model (see the bench's output)\n"
+      << "sample,kind,phi,shear_rate_per_s,viscosity_mPa_s,sd_mPa_s,n\n";
+  const double eta0_mpa_s = sample.plasma.eta0 * 1e3;
+  for (const double shear_rate : {100.0, 300.0, 1000.0})
+    out << sample.name << ",plasma,0," << shear_rate << ',' << eta0_mpa_s << ',' << 0.01 * eta0_mpa_s << ",10\n";
+  for (const auto& p : sample.points)
+    out << sample.name << ",suspension," << p.phi << ',' << p.shear_rate << ',' << p.eta_re * eta0_mpa_s << ','
+        << p.eta_re_sd * eta0_mpa_s << ",1\n";
+  return out.str();
+}
+
 std::vector<CalibrationScalingRow> time_calibration_scaling(const surrogate::ViscosityModel& model,
                                                             const CalibrationScalingOptions& options,
                                                             void (*progress)(const CalibrationScalingRow&)) {
   std::vector<CalibrationScalingRow> rows;
   for (const int n : options.points) {
     std::mt19937_64 rng(options.seed + static_cast<std::uint64_t>(n));
-    const calibration::SampleData sample = sample_of(model, n, options.shear_modulus, rng);
+    const calibration::SampleData drawn = sample_of(model, n, options.shear_modulus, rng);
+    // Through the CSV, as rbcal calibrate reads it (eta0 from the plasma rows, with its error).
+    const std::string csv = scaling_sample_csv(drawn);
+    if (!options.save_folder.empty())
+      formats::write_file_atomically(std::filesystem::path(options.save_folder) / (drawn.name + ".csv"), csv);
+    std::istringstream stream(csv);
+    const calibration::CalibrationInput input =
+        calibration::make_calibration_input(calibration::parse_rheometer_csv(stream, drawn.name + ".csv"));
+    calibration::CalibrationJobOptions job;  // rbcal calibrate's defaults
+    std::ostringstream log;
     CalibrationScalingRow row;
     row.points = n;
-    calibration::DirectFitOptions direct;
-    direct.setup = calibration::product_model_setup();  // as rbcal calibrate
+    job.method = "direct";
     auto t = std::chrono::steady_clock::now();
-    row.direct_shear_modulus = calibration::fit_direct(sample, model, direct).shear_modulus;
+    const calibration::CalibrationReport direct = calibration::calibrate_samples(input, model, job, log);
     row.direct_seconds = seconds_since(t);
+    if (direct.samples.front().direct) row.direct_shear_modulus = direct.samples.front().direct->shear_modulus;
     if (options.mcmc) {
-      calibration::McmcCalibrationOptions mcmc;
-      mcmc.posterior.setup = direct.setup;
-      mcmc.start_fit = direct;
+      job.method = "all";
       t = std::chrono::steady_clock::now();
-      const calibration::McmcCalibration m = calibration::calibrate_mcmc(sample, model, mcmc);
-      row.mcmc_seconds = seconds_since(t);
-      row.mcmc_shear_modulus = m.shear_modulus_median;
-      long walkers = 0;
-      for (const auto& chain : m.mcmc.chains) walkers += static_cast<long>(chain.walkers());
-      row.mcmc_evaluations = walkers * (m.mcmc.steps + m.mcmc.pilot_steps);
+      const calibration::CalibrationReport all = calibration::calibrate_samples(input, model, job, log);
+      row.all_seconds = seconds_since(t);
+      const calibration::SampleReport& r = all.samples.front();
+      if (r.mcmc) {
+        row.mcmc_shear_modulus = r.mcmc->shear_modulus_median;
+        row.mcmc_evaluations = r.mcmc->mcmc.evaluations;
+        row.mcmc_seconds = r.mcmc->mcmc.seconds;
+      }
     }
     rows.push_back(row);
     if (progress) progress(row);

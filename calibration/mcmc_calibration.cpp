@@ -30,7 +30,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   fit_options.model_nuisances_as_parameters = options.posterior.model_nuisances_as_parameters;
   fit_options.shear_modulus_min = options.posterior.shear_modulus_min;
   fit_options.shear_modulus_max = options.posterior.shear_modulus_max;
-  out.start_fit = fit_direct(sample, model, fit_options);
+  out.start_fit = options.fitted_start ? *options.fitted_start : fit_direct(sample, model, fit_options);
   out.points = out.start_fit.used_points();
 
   // The posterior is truncated to the model's range by default (posterior.hpp). After an edge fit
@@ -40,7 +40,7 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
                                sample.plasma.standard_error);
   out.posterior = posterior.options();
   const int d = posterior.dimension();
-  McmcStart start{Eigen::VectorXd::Zero(d), Eigen::VectorXd::Constant(d, 0.1)};
+  McmcStart start{Eigen::VectorXd::Zero(d), Eigen::VectorXd::Constant(d, 0.1), {}};
   start.center(0) = out.start_fit.estimate(0);
   if (out.start_fit.covariance_ok) start.scale(0) = std::sqrt(out.start_fit.covariance(0, 0));
   if (posterior.lambda_index() >= 0) {
@@ -68,6 +68,20 @@ McmcCalibration calibrate_mcmc(const SampleData& sample, const surrogate::Viscos
   }
   for (int p = 0; p < d; ++p)
     if (!(start.scale(p) > 0.0) || !std::isfinite(start.scale(p))) start.scale(p) = 0.1;
+  // A fit that found its optimum inside the support gives the sampler its Laplace covariance
+  // (parameters it did not fit keep their start scale, uncorrelated), so that the independence
+  // sampler can start without a pilot; after an edge or bound fit the pilot finds the shape.
+  const DirectFitResult& fit = out.start_fit;
+  if (fit.covariance_ok && !fit.at_bound && fit.model_edge == ModelEdge::none) {
+    std::vector<int> in_fit(static_cast<std::size_t>(d));
+    for (int p = 0; p < d; ++p) in_fit[static_cast<std::size_t>(p)] = fit.index_of(posterior.parameter_names()[p]);
+    start.covariance = start.scale.array().square().matrix().asDiagonal();
+    for (int p = 0; p < d; ++p)
+      for (int q = 0; q < d; ++q) {
+        const int i = in_fit[static_cast<std::size_t>(p)], j = in_fit[static_cast<std::size_t>(q)];
+        if (i >= 0 && j >= 0) start.covariance(p, q) = fit.covariance(i, j);
+      }
+  }
   McmcOptions sampler = options.sampler;
   if (sampler.walkers == 0) sampler.walkers = automatic_walkers(d);
   out.mcmc = sample_posterior([&posterior](const Eigen::VectorXd& theta) { return posterior(theta); },

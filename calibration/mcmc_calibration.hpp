@@ -23,6 +23,9 @@ struct McmcCalibrationOptions {
   McmcOptions sampler;         // walkers 0: automatic_walkers(dimension)
   // Start fit; its cell radius, lambda and bounds are taken from `posterior`.
   DirectFitOptions start_fit;
+  // When given, a fit already made with those options (e.g. the `direct` method's), used instead
+  // of fitting again; it must outlive the call.
+  const DirectFitResult* fitted_start = nullptr;
 };
 
 struct McmcCalibration {

@@ -3,9 +3,11 @@
 // parameter say stop (rank-normalised split R-hat < target and bulk ESS >= target) or a step limit
 // is reached; summaries of every parameter. Two samplers:
 //   ensemble:     the stretch move (ensemble_sampler.hpp) throughout;
-//   independence: a short stretch-move pilot, then independence Metropolis-Hastings with a
-//                 multivariate t fitted to the pilot's second half (independence_sampler.hpp); if
-//                 that proposal is accepted too rarely, the pilot ensembles go on instead.
+//   independence: independence Metropolis-Hastings with a multivariate t proposal
+//                 (independence_sampler.hpp), about the start's centre with its Laplace covariance
+//                 when the start has one; without one, or when that proposal is accepted too
+//                 rarely, a short stretch-move pilot first and a t fitted to its second half; if
+//                 that proposal too is accepted too rarely, the pilot ensembles go on instead.
 // R-hat compares the independent groups (each group's draws pooled over its walkers, split
 // in halves by step): walkers of one ensemble are not independent chains. ESS and the
 // autocorrelation time use one series per walker (the within-walker autocorrelation, averaged over
@@ -32,8 +34,9 @@ struct McmcOptions {
   double stretch_scale = 2.0;  // a of the stretch move (Goodman & Weare 2010)
   std::uint64_t seed = 20240601;
   // First check after this many steps per walker, later checks every check_interval steps
-  // (0: the sampler's default, 500 and 250 for the ensemble, 100 and 50 for the independence
-  // stage, whose draws are nearly independent). Steps of the pilot do not count here.
+  // (0: the sampler's default, 500 and 250 for the ensemble, 40 and 8 for the independence
+  // stage, whose draws are nearly independent: ESS 1000 takes some 1500 draws, about 50 steps
+  // of 4 x 8 walkers). Steps of the pilot do not count here.
   int min_steps = 0;
   int check_interval = 0;
   int max_steps = 20000;  // stop here even if not converged (per walker, the pilot included)
@@ -45,7 +48,9 @@ struct McmcOptions {
   // Fraction of the steps discarded as warm-up at every check (BDA3's default: the first half).
   // Starting near the MAP a smaller fraction (0.25) saves steps when each prediction is costly.
   // Negative: the sampler's default, 0.5 for the ensemble and 0.1 for the independence stage
-  // (the pilot is discarded whole and its walkers start the stage already near the posterior).
+  // (after a pilot, which is discarded whole, its walkers start near the posterior; from the
+  // proposal's draws, a walker is at the posterior once it has accepted a move, within a
+  // few steps at the acceptance the stage requires).
   double burn_in_fraction = -1.0;
   // Independence sampler: stretch-move steps of the pilot (the proposal is fitted to their
   // second half), the proposal's degrees of freedom, and the acceptance fraction at the first
@@ -53,12 +58,19 @@ struct McmcOptions {
   int pilot_steps = 100;
   double proposal_dof = 4.0;
   double min_acceptance = 0.2;
+  // Walkers per chain of the independence stage. Each is a chain of its own, so fewer, longer
+  // series cost the same per draw and give the ESS estimate (per-walker autocorrelations) more
+  // to go on; after a pilot the first of its walkers go on.
+  int independence_walkers = 8;
 };
 
 // Where walkers start: around center with per-parameter scale (e.g. MAP and Laplace sd).
+// covariance, when given (d x d, e.g. the Laplace covariance of a fit that found the mode inside
+// the support), lets the independence sampler start without a pilot.
 struct McmcStart {
   Eigen::VectorXd center;
   Eigen::VectorXd scale;
+  Eigen::MatrixXd covariance;  // optional
 };
 
 struct ParameterSummary {
@@ -76,6 +88,10 @@ struct McmcResult {
   std::vector<std::string> parameter_names;
   std::string sampler;                // what sampled the chains, in words
   int pilot_steps = 0;                // stretch-move steps before `chains` (independence sampler)
+  long long evaluations = 0;          // of the log density, all stages and tries included
+  // Independence stage: ln p - ln q of every proposal, q the normalised proposal density (an
+  // importance sample of the evidence, model_evidence.hpp); empty for the ensemble.
+  std::vector<double> proposal_log_weights;
   std::vector<EnsembleChain> chains;  // full history after the pilot, burn-in included
   int steps = 0;                      // per walker, in `chains`
   int burn_in_steps = 0;              // burn_in_fraction of the steps, discarded by summaries and draws()
@@ -87,6 +103,7 @@ struct McmcResult {
 
   // Post-burn-in draws: one row per draw (chain, then step, then walker), one column per parameter.
   Eigen::MatrixXd draws() const;
+  Eigen::VectorXd draw_log_densities() const;  // the log density of each row of draws()
   std::vector<double> parameter_draws(int parameter) const;
   // Chain sets for diagnostics, post-burn-in: one series per walker of every ensemble ...
   std::vector<std::vector<double>> walker_series(int parameter) const;

@@ -1,5 +1,8 @@
 #include "calibration/posterior_predictive_check.hpp"
 
+#include "calibration/detail/draw_predictions.hpp"
+
+
 #include <algorithm>
 #include <boost/math/distributions/binomial.hpp>
 #include <cmath>
@@ -63,13 +66,17 @@ PredictiveCheck posterior_predictive_check(const surrogate::ViscosityModel& mode
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> normal;
   const double tail = 0.5 * (1.0 - options.level);
-  for (const RelativeViscosityPoint& point : calibration.points) {
+  // The model at every point for each draw, batched; then the draws of the noise in the order
+  // of points, then draws.
+  const auto at_draw = predictions_at_draws(posterior, all, n_draws, calibration.points);
+  for (std::size_t i = 0; i < calibration.points.size(); ++i) {
+    const RelativeViscosityPoint& point = calibration.points[i];
     int below = 0;
     std::vector<double> predicted;
     for (Eigen::Index k = 0; k < n_draws; ++k) {
-      const Eigen::VectorXd theta = all.row(k * all.rows() / n_draws).transpose();
+      const Eigen::VectorXd theta = thinned_draw(all, k, n_draws);
       const ViscosityObservation obs = posterior.observation_at(theta);
-      const auto p = obs.predict(point, std::exp(theta(0)), posterior.lambda(theta));
+      const surrogate::ViscosityPrediction& p = at_draw[static_cast<std::size_t>(k)][i];
       const ObservedRelativeViscosity measured =
           observed_relative_viscosity(point, eta0_is_parameter, obs.plasma_viscosity);
       const double noise = std::sqrt(p.sd * p.sd + std::pow(posterior.discrepancy(theta) * p.eta_re, 2) +

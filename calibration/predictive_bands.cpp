@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "calibration/detail/draw_predictions.hpp"
 #include "calibration/posterior.hpp"
 #include "calibration/quantiles.hpp"
 
@@ -35,22 +36,31 @@ std::vector<PredictiveBand> predictive_bands(const surrogate::ViscosityModel& mo
 
   const Eigen::MatrixXd all = calibration.mcmc.draws();
   const Eigen::Index n_draws = std::min<Eigen::Index>(all.rows(), std::max(1, options.max_draws));
-  std::mt19937_64 rng(options.seed);
-  std::normal_distribution<double> normal;
-  std::vector<PredictiveBand> bands;
-  for (double phi : phis) {
-    PredictiveBand band;
-    band.phi = phi;
-    band.shear_rate = rates;
+  // The model on the whole grid (phi, then shear rate) for each draw, batched; then the draws
+  // of the model error in the order of grid points, then draws.
+  std::vector<RelativeViscosityPoint> grid;
+  for (double phi : phis)
     for (double rate : rates) {
       RelativeViscosityPoint at;
       at.phi = phi;
       at.shear_rate = rate;
+      grid.push_back(at);
+    }
+  const auto at_draw = predictions_at_draws(posterior, all, n_draws, grid);
+  std::mt19937_64 rng(options.seed);
+  std::normal_distribution<double> normal;
+  std::vector<PredictiveBand> bands;
+  std::size_t g = 0;
+  for (double phi : phis) {
+    PredictiveBand band;
+    band.phi = phi;
+    band.shear_rate = rates;
+    for (std::size_t r = 0; r < rates.size(); ++r, ++g) {
       std::vector<double> eta(static_cast<std::size_t>(n_draws));
       for (Eigen::Index k = 0; k < n_draws; ++k) {
-        const Eigen::VectorXd theta = all.row(k * all.rows() / n_draws).transpose();
+        const Eigen::VectorXd theta = thinned_draw(all, k, n_draws);
         const ViscosityObservation obs = posterior.observation_at(theta);
-        const auto p = obs.predict(at, std::exp(theta(0)), posterior.lambda(theta));
+        const surrogate::ViscosityPrediction& p = at_draw[static_cast<std::size_t>(k)][g];
         double eta_re = p.eta_re;
         if (options.include_model_error)
           eta_re += std::hypot(p.sd, posterior.discrepancy(theta) * p.eta_re) * normal(rng);

@@ -51,6 +51,14 @@ struct ViscosityObservation {
     return nuisance.empty() ? model->predict(point.phi, ca, lambda)
                             : model->predict_with(point.phi, ca, lambda, nuisance);
   }
+  // predict at every point (batched by the model).
+  std::vector<surrogate::ViscosityPrediction> predict_many(const std::vector<RelativeViscosityPoint>& points,
+                                                           double shear_modulus, double lambda) const {
+    std::vector<surrogate::ViscosityQuery> queries;
+    queries.reserve(points.size());
+    for (const auto& point : points) queries.push_back({point.phi, capillary_number_at(point, shear_modulus), lambda});
+    return model->predict_many_with(queries, nuisance);
+  }
   // Whether the point's (phi, Ca, lambda) lies in the box the model was built on.
   bool inside_range(const RelativeViscosityPoint& point, double shear_modulus, double lambda) const {
     const surrogate::ParameterRange r = model->range();

@@ -48,4 +48,13 @@ JointViscosityPrediction FixedNuisanceModel::predict_joint(const std::vector<Vis
   return base_.predict_joint(queries, all_values(values), form);
 }
 
+std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many(const std::vector<ViscosityQuery>& queries) const {
+  return base_.predict_many_with(queries, all_values({}));
+}
+
+std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many_with(const std::vector<ViscosityQuery>& queries,
+                                                                       const std::vector<double>& values) const {
+  return base_.predict_many_with(queries, all_values(values));
+}
+
 }  // namespace rbcal::surrogate

@@ -23,6 +23,9 @@ class FixedNuisanceModel : public ViscosityModel {
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
                                          const std::vector<double>& values,
                                          CovarianceForm form = CovarianceForm::automatic) const override;
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
+  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+                                                     const std::vector<double>& values) const override;
 
  private:
   // The base model's nuisance values: the free ones given (or their means), the fixed one set.

@@ -108,6 +108,26 @@ ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary
   return boxed(predict_at_offset(phi, capillary_number, viscosity_ratio, values[0])).prediction;
 }
 
+std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many(const std::vector<ViscosityQuery>& queries) const {
+  return predict_many_with(queries, {offset_.mean});
+}
+
+std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many_with(const std::vector<ViscosityQuery>& queries,
+                                                                      const std::vector<double>& values) const {
+  if (values.size() > 1u)
+    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
+                                std::to_string(values.size()));
+  const std::vector<double> w = weights(values.empty() ? offset_.mean : values[0]);
+  std::vector<std::vector<ViscosityPrediction>> member(members_.size());
+  for (std::size_t k = 0; k < members_.size(); ++k)
+    if (w[k] != 0.0) member[k] = members_[k].model->predict_many(queries);
+  std::vector<ViscosityPrediction> out;
+  out.reserve(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    out.push_back(boxed(combined(w, [&](std::size_t k) { return member[k][i]; })).prediction);
+  return out;
+}
+
 JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ViscosityQuery>& queries,
                                                           const std::vector<double>& values,
                                                           CovarianceForm form) const {

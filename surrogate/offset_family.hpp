@@ -64,6 +64,9 @@ class OffsetFamilyModel final : public ViscosityModel {
   JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
                                          const std::vector<double>& values,
                                          CovarianceForm form = CovarianceForm::automatic) const override;
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
+  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+                                                     const std::vector<double>& values) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }
   std::vector<ModelNuisance> nuisances() const override;

@@ -88,6 +88,16 @@ class ViscosityModel {
                                            const std::vector<double>& /*nuisance_values*/) const {
     return predict(phi, capillary_number, viscosity_ratio);
   }
+  // predict_with at each query (empty values: predict_many); a model may batch them.
+  virtual std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+                                                             const std::vector<double>& nuisance_values) const {
+    if (nuisance_values.empty()) return predict_many(queries);
+    std::vector<ViscosityPrediction> out;
+    out.reserve(queries.size());
+    for (const ViscosityQuery& q : queries)
+      out.push_back(predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
+    return out;
+  }
 
   // The model at several points with the joint covariance of its errors there, at given nuisance
   // values (empty: their means). The errors of a surrogate at neighbouring points are not

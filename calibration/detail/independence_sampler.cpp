@@ -1,6 +1,8 @@
 #include "calibration/detail/independence_sampler.hpp"
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -31,8 +33,20 @@ double MultivariateT::log_density(const Eigen::VectorXd& x) const {
   return -0.5 * (dof_ + static_cast<double>(mean_.size())) * std::log1p(u.squaredNorm() / dof_);
 }
 
+double MultivariateT::log_normaliser() const {
+  const double d = static_cast<double>(mean_.size());
+  return std::lgamma(0.5 * (dof_ + d)) - std::lgamma(0.5 * dof_) - 0.5 * d * std::log(dof_ * std::numbers::pi) -
+         lower_.diagonal().array().log().sum();
+}
+
+Eigen::MatrixXd MultivariateT::covariance() const {
+  if (!(dof_ > 2.0)) throw std::invalid_argument("multivariate t: no covariance for dof <= 2");
+  return dof_ / (dof_ - 2.0) * lower_ * lower_.transpose();
+}
+
 IndependenceSampler::IndependenceSampler(LogDensity log_density, const Eigen::MatrixXd& initial,
-                                         MultivariateT proposal, std::uint64_t seed)
+                                         const Eigen::VectorXd& initial_log_density, MultivariateT proposal,
+                                         std::uint64_t seed)
     : log_density_(std::move(log_density)),
       proposal_(std::move(proposal)),
       positions_(initial),
@@ -42,8 +56,11 @@ IndependenceSampler::IndependenceSampler(LogDensity log_density, const Eigen::Ma
     throw std::invalid_argument("independence sampler: walkers and proposal differ in dimension");
   log_weight_.resize(initial.cols());
   current_log_density_.resize(initial.cols());
+  if (initial_log_density.size() != 0 && initial_log_density.size() != initial.cols())
+    throw std::invalid_argument("independence sampler: one initial log density per walker, or none");
   for (int w = 0; w < initial.cols(); ++w) {
-    current_log_density_(w) = log_density_(positions_.col(w));
+    current_log_density_(w) =
+        initial_log_density.size() != 0 ? initial_log_density(w) : log_density_(positions_.col(w));
     if (!std::isfinite(current_log_density_(w)))
       throw std::invalid_argument("independence sampler: initial walker " + std::to_string(w) +
                                   " has no finite log density");
@@ -59,6 +76,9 @@ void IndependenceSampler::advance(int steps) {
       const double proposal_log_density = log_density_(proposal);
       const double proposal_log_weight = proposal_log_density - proposal_.log_density(proposal);
       ++acceptance_.proposed;
+      proposal_log_weights_.push_back(std::isfinite(proposal_log_density)
+                                          ? proposal_log_weight - proposal_.log_normaliser()
+                                          : -std::numeric_limits<double>::infinity());
       if (std::isfinite(proposal_log_density) && std::log(uniform(rng_)) < proposal_log_weight - log_weight_(k)) {
         positions_.col(k) = proposal;
         current_log_density_(k) = proposal_log_density;

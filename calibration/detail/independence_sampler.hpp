@@ -11,6 +11,7 @@
 // Deterministic for a given seed (std::mt19937_64).
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -24,7 +25,9 @@ class MultivariateT {
  public:
   MultivariateT(Eigen::VectorXd mean, const Eigen::MatrixXd& scale, double dof);
   Eigen::VectorXd draw(std::mt19937_64& rng) const;
-  double log_density(const Eigen::VectorXd& x) const;  // up to an additive constant
+  double log_density(const Eigen::VectorXd& x) const;  // up to an additive constant ...
+  double log_normaliser() const;                         // ... which is this
+  Eigen::MatrixXd covariance() const;                    // dof / (dof - 2) x scale; dof > 2
   int dimension() const { return static_cast<int>(mean_.size()); }
 
  private:
@@ -35,16 +38,21 @@ class MultivariateT {
 
 class IndependenceSampler {
  public:
-  // initial: dimension x walkers, each with a finite log density.
-  IndependenceSampler(LogDensity log_density, const Eigen::MatrixXd& initial, MultivariateT proposal,
-                      std::uint64_t seed);
+  // initial: dimension x walkers, each with a finite log density; initial_log_density: theirs
+  // when known (empty: evaluated here).
+  IndependenceSampler(LogDensity log_density, const Eigen::MatrixXd& initial, const Eigen::VectorXd& initial_log_density,
+                      MultivariateT proposal, std::uint64_t seed);
   void advance(int steps);  // appends each step's walkers to the chain
   const EnsembleChain& chain() const { return chain_; }
   double acceptance_fraction() const { return acceptance_.fraction(); }
+  // ln p - ln q (q normalised) of every proposal so far, in order: draws of q with their
+  // importance weights, an importance sample of p's normalising constant.
+  const std::vector<double>& proposal_log_weights() const { return proposal_log_weights_; }
 
  private:
   LogDensity log_density_;
   MultivariateT proposal_;
+  std::vector<double> proposal_log_weights_;
   Eigen::MatrixXd positions_;
   Eigen::VectorXd log_weight_;  // ln p - ln q of each walker's current state
   Eigen::VectorXd current_log_density_;

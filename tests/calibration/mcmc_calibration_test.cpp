@@ -46,6 +46,15 @@ TEST(McmcCalibration, StopsWhenConvergedAndIsReproducible) {
   // Different seeds agree within Monte Carlo error.
   const double mcse = a.mcmc.parameters[0].sd / std::sqrt(a.mcmc.parameters[0].bulk_ess);
   EXPECT_NEAR(a.mcmc.parameters[0].mean, c.mcmc.parameters[0].mean, 6.0 * mcse);
+
+  // A start fit made beforehand with the same options (the direct method's) gives the same run.
+  options.sampler.seed -= 1;
+  DirectFitOptions start = options.start_fit;
+  start.setup = options.posterior.setup;
+  const DirectFitResult fitted = fit_direct(sample, model, start);
+  options.fitted_start = &fitted;
+  const McmcCalibration d = calibrate_mcmc(sample, model, options);
+  EXPECT_EQ(a.mcmc.parameter_draws(0), d.mcmc.parameter_draws(0));
 }
 
 TEST(McmcCalibration, CredibleIntervalCoversTheTruth) {

@@ -157,6 +157,29 @@ TEST(OffsetFamily, BoxCorrectionCarriesSdAndDerivativesByTheChainRule) {
   EXPECT_EQ(with_box_correction(p, 0.0).eta_re, 3.0);
 }
 
+// The batched predictions (predict_many, predict_many_with, used by the predictive check and
+// bands) are the point-by-point ones, box correction included, at the prior mean and elsewhere.
+TEST(OffsetFamily, BatchedPredictionsArePointByPointOnes) {
+  std::vector<OffsetFamilyMember> members;
+  for (double c : {0.45, 0.6, 0.75, 0.9, 1.05}) members.push_back({c, std::make_shared<KnownMember>(c, curved)});
+  const OffsetFamilyModel f(members, 0.75, 0.15, BoxCorrectionPrior{0.1, 0.07});
+  const std::vector<ViscosityQuery> q = {{0.1, 0.1, 5.0}, {0.25, 0.5, 2.0}, {0.45, 2.0, 8.0}};
+  for (double c : {0.5, 0.75, 0.97}) {
+    const std::vector<ViscosityPrediction> many = f.predict_many_with(q, {c});
+    ASSERT_EQ(many.size(), q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const ViscosityPrediction one = f.predict_with(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio, {c});
+      EXPECT_DOUBLE_EQ(many[i].eta_re, one.eta_re) << c << " " << i;
+      EXPECT_DOUBLE_EQ(many[i].sd, one.sd);
+      EXPECT_DOUBLE_EQ(many[i].d_ln_ca, one.d_ln_ca);
+    }
+  }
+  const std::vector<ViscosityPrediction> at_mean = f.predict_many(q);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    EXPECT_DOUBLE_EQ(at_mean[i].eta_re, f.predict(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio).eta_re);
+  EXPECT_THROW(f.predict_many_with(q, {0.6, 0.1}), std::invalid_argument);  // one nuisance only
+}
+
 // The joint covariance: each point's sd as predict gives it, correlated as the bracketing
 // members correlate (weighted linearly in c), plus the box correction's error sd_beta^2 g g^T with
 // g_i = eta_i ln eta_plain_i, common to every point.
@@ -317,6 +340,8 @@ TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
   const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {0.6});
   EXPECT_EQ(a.points[1].eta_re, b.points[1].eta_re);
   EXPECT_EQ(a.covariance.dense()(0, 1), b.covariance.dense()(0, 1));
+  EXPECT_EQ(held.predict_many(q)[1].eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
+  EXPECT_EQ(held.predict_many_with(q, {})[0].eta_re, f.predict_at_offset(0.2, 0.5, 5.0, 0.6).eta_re);
   EXPECT_THROW(FixedNuisanceModel(f, "offset_c", 1.2), std::invalid_argument);  // outside 0.45 .. 1.05
   EXPECT_THROW(FixedNuisanceModel(f, "beta", 0.1), std::invalid_argument);      // no such nuisance here
 }
