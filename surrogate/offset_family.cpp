@@ -1,5 +1,9 @@
 #include "surrogate/offset_family.hpp"
 
+#include <omp.h>
+
+#include <exception>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -145,14 +149,23 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
   const auto correlation_weight = [&](std::size_t k) { return k == lower ? 1.0 - t : k == lower + 1 ? t : 0.0; };
   // Each member is asked once: jointly where its correlation is needed, point by point elsewhere.
   const std::vector<double> w = weights(offset);
+  // In parallel over members unless already inside a parallel region (the MCMC's chains).
   std::vector<JointViscosityPrediction> member(members_.size());
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic) if (!omp_in_parallel())
   for (std::size_t k = 0; k < members_.size(); ++k) {
-    if (correlation_weight(k) != 0.0) {
-      member[k] = members_[k].model->predict_joint(queries, {}, form);
-    } else if (w[k] != 0.0) {
-      member[k].points = members_[k].model->predict_many(queries);
+    try {
+      if (correlation_weight(k) != 0.0) {
+        member[k] = members_[k].model->predict_joint(queries, {}, form);
+      } else if (w[k] != 0.0) {
+        member[k].points = members_[k].model->predict_many(queries);
+      }
+    } catch (...) {
+#pragma omp critical
+      failure = std::current_exception();
     }
   }
+  if (failure) std::rethrow_exception(failure);
   Eigen::VectorXd sd(n), box_gradient(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Boxed b = boxed(combined(w, [&](std::size_t k) { return member[k].points[static_cast<std::size_t>(i)]; }));
