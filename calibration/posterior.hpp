@@ -43,7 +43,8 @@ struct PosteriorOptions {
   // lambda) leaves the model's range has zero posterior (the posterior is truncated to where
   // the model was built); false: the model is trusted to widen its own predictive sd outside
   // its range. The surrogate's extrapolation was measured: the default of 69 runs predicted new
-  // runs at Ca 5.6-18 14-47 % too low, 5-13 of its sd (docs/library.md, "The high-Ca tier").
+  // runs at Ca 5.6-18 14-47 % too low, 5-13 of its sd (studies/library-v2-development/README.md,
+  // "The high-Ca tier at C 10").
   bool reject_outside_model_range = true;
   // Add ln eta0 when possible: eta0's standard error > 0 and every point has its viscosity.
   bool plasma_viscosity_as_parameter = true;

@@ -32,8 +32,8 @@
 #   N8_USE_FILE=FILE uses only the N_a 8 cases FILE lists (one ID per line, # comments);
 #   either way all cases stay in data/library/v2/n8. The default of 2026-11-24 is
 #   reproduced by METHOD=richardson N8_USE_FILE=data/library/v2/default_n8_cases.txt (15 of
-#   the maximin subset; that file says why the others are left out; docs/library.md,
-#   "Round 2 and the layers").
+#   the maximin subset; that file says why the others are left out;
+#   studies/library-v2-development/README.md, "Round 2 and the layers").
 # It rewrites data/library/default/cases and surrogate.json (the default since 2026-11-24);
 # review `git diff --stat data/library/default` and the trend check before committing.
 set -euo pipefail

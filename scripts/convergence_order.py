@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Observed convergence order and Richardson estimates from three runs of one case at
-N_a = n1 < n2 < n3 (docs/library.md, issue 16, items 1 and 2).
+N_a = n1 < n2 < n3 (studies/library-v2-development/README.md; issue 16, items 1 and 2).
 
     python3 scripts/convergence_order.py START END N1:SERIES1 N2:SERIES2 N3:SERIES3 [--orders 2,2.8,3]
 

@@ -5,7 +5,7 @@ the box plus a maximin Latin hypercube of 52 points, 60 in all, each at N_a 6; a
 maximin subset of 20 of them (corners included) also at N_a 8, for the resolution
 extrapolation. Deterministic: rerunning writes the same files.
 
-Numerics (docs/library.md, "Library v2"): Evans-Fung cells of 1280 elements, Skalak C 10,
+Numerics (docs/library.md, "The runs' numerics, and why"): Evans-Fung cells of 1280 elements, Skalak C 10,
 kb_hat 0.0078, box 6a x 8a x 6a, tau_out 1, Euler, indicator tolerance 0.1, coupling
 interval 2 (shown equivalent to 1 on two dense cases), gamma_dot t to 40 with the window
 [15, 40]. Re 0.2, lowered where G_s in lattice units times the coupling interval would
@@ -14,7 +14,8 @@ docs/library.md "Time-step limit").
 
 The gap tier (n8_h16, from 2026-11-24): every point at phi >=
 ROUND2_PHI again at N_a 8 in a 16a gap (box 6a x 16a x 6a), where the 8a box's layers
-do not set eta_re (docs/library.md, "Dense states in the 8a box are layered"), with the
+do not set eta_re (studies/library-v2-development/README.md, "Dense states in the 8a box
+are layered"), with the
 membrane moved by the interval's mean velocity (numerics.node_velocity, docs/performance.md).
 
 Usage: python3 scripts/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
@@ -38,7 +39,8 @@ LHS_POINTS, SUBSET, RESTARTS, SEED = 52, 20, 3000, 20261123
 # Round 2 of the N_a 8 tier (from 2026-11-24): every design point at
 # phi >= ROUND2_PHI. With only the maximin subset at N_a 8, the correction model carried the
 # large dense low-Ca drops of phi 0.55 down to phi 0.41 and flattened the shear thinning
-# there (docs/library.md, "Dense, low Ca to strain 40"); paired dense points leave the model
+# there (studies/library-v2-development/README.md, "Dense, low Ca to strain 40"); paired
+# dense points leave the model
 # only the semi-dilute range, where corrections are small. Run nearest phi 0.41 first.
 ROUND2_PHI = 0.38
 COUPLING_INTERVAL, CAP, RE = 2, 0.05, 0.2

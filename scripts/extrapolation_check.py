@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The library's (N_a 6, 8) extrapolation against the points run finer (docs/library.md,
+"""The library's (N_a 6, 8) extrapolation against the points run finer
+(studies/library-v2-development/README.md,
 "The (6, 8) extrapolation against the finer runs"; issue 16, item 2).
 
     python3 scripts/extrapolation_check.py [--order 2.8] [--order-low 2,1.5,1]

@@ -18,8 +18,9 @@
 // every run, not independent per run; entered per run it acts on the surrogate as a
 // smoothness prior (without it the default loses its shear thinning at dense, low Ca and
 // the main job's fit turns bimodal; with it new dense runs are predicted a little worse:
-// docs/library.md, "Out of sample"). Its effect on eta_re itself is measured by rebuilding
-// at other c (scripts/effective_phi_check.py).
+// studies/library-v2-development/README.md,
+// "The first dense runs at phi_eff 0.41-0.55, out of sample"). Its effect on eta_re itself is
+// measured by rebuilding at other c (scripts/effective_phi_check.py).
 #include <functional>
 #include <string>
 #include <vector>

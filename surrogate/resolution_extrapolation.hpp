@@ -23,7 +23,7 @@ namespace rbcal::surrogate {
 struct ExtrapolationOptions {
   // p: the convergence order of the estimate. Measured at two points with N_a 6, 8, 10
   // (phi 0.21 and 0.55: orders 2.7 and 2.85), where p = 2.8 makes the (6, 8) and (8, 10)
-  // estimates agree within 0.01 (docs/library.md).
+  // estimates agree within 0.01 (studies/library-v2-development/README.md, "Membrane overlaps").
   double order = 2.8;
   // p_low: the low end of the plausible orders; half the distance between the two estimates
   // enters the sd. 1.5 is the lowest order any C 10 triplet showed (dilute high Ca from N_a

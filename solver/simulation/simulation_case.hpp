@@ -43,7 +43,8 @@ struct SimulationCase {
   // Optional growth of C with Ca: the membrane runs with C = max(skalak_c, skalak_c_per_ca
   // * Ca) (effective_skalak_c). The area strain of a cell scales as Ca / (1 + 2C), so a C
   // proportional to Ca bounds it equally at every Ca, while the explicit coupling's limit
-  // (on G_s (1 + 2C) in lattice units, G_s ~ 1 / Ca) stays the same (docs/library.md,
+  // (on G_s (1 + 2C) in lattice units, G_s ~ 1 / Ca) stays the same
+  // (studies/library-v2-development/README.md,
   // "Area incompressibility at high Ca"). 0: C is skalak_c.
   double skalak_c_per_ca = 0.0;
   double effective_skalak_c() const;
