@@ -12,21 +12,34 @@ namespace rbcal::calibration {
 JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector<RelativeViscosityPoint>& points,
                                double shear_modulus, double lambda, bool plasma_viscosity_is_parameter,
                                double relative_discrepancy) {
+  return joint_residuals(*at.model, at.nuisance, at.cell_radius,
+                         {{&points, shear_modulus, lambda, at.plasma_viscosity, plasma_viscosity_is_parameter}},
+                         relative_discrepancy);
+}
+
+JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const std::vector<double>& nuisance,
+                               double cell_radius, const std::vector<SampleTerms>& samples,
+                               double relative_discrepancy) {
   std::vector<surrogate::ViscosityQuery> queries;
-  for (const auto& point : points) queries.push_back({point.phi, at.capillary_number_at(point, shear_modulus), lambda});
-  surrogate::JointViscosityPrediction model = at.model->predict_joint(queries, at.nuisance);
+  for (const SampleTerms& s : samples)
+    for (const auto& point : *s.points)
+      queries.push_back(
+          {point.phi, capillary_number(s.plasma_viscosity, point.shear_rate, cell_radius, s.shear_modulus), s.lambda});
+  surrogate::JointViscosityPrediction predicted = model.predict_joint(queries, nuisance);
   JointResiduals out;
-  const auto n = static_cast<Eigen::Index>(points.size());
+  const auto n = static_cast<Eigen::Index>(queries.size());
   out.residual.resize(n);
-  out.covariance = std::move(model.covariance);
+  out.covariance = std::move(predicted.covariance);
   Eigen::VectorXd independent(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto measured =
-        observed_relative_viscosity(points[static_cast<std::size_t>(i)], plasma_viscosity_is_parameter, at.plasma_viscosity);
-    const double predicted = model.points[static_cast<std::size_t>(i)].eta_re;
-    out.residual(i) = measured.eta_re - predicted;
-    independent(i) = measured.sd * measured.sd + std::pow(relative_discrepancy * predicted, 2);
-  }
+  Eigen::Index i = 0;
+  for (const SampleTerms& s : samples)
+    for (const auto& point : *s.points) {
+      const auto measured = observed_relative_viscosity(point, s.plasma_viscosity_is_parameter, s.plasma_viscosity);
+      const double eta = predicted.points[static_cast<std::size_t>(i)].eta_re;
+      out.residual(i) = measured.eta_re - eta;
+      independent(i) = measured.sd * measured.sd + std::pow(relative_discrepancy * eta, 2);
+      ++i;
+    }
   out.covariance.add_diagonal(independent);
   return out;
 }

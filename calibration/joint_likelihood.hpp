@@ -26,6 +26,23 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
                                double shear_modulus, double lambda, bool plasma_viscosity_is_parameter,
                                double relative_discrepancy = 0.0);
 
+// One sample's share of a likelihood over several samples: its points at its own G_s, lambda
+// and eta0.
+struct SampleTerms {
+  const std::vector<RelativeViscosityPoint>* points = nullptr;
+  double shear_modulus = 0.0;      // [N/m]
+  double lambda = 0.0;
+  double plasma_viscosity = 0.0;   // eta0 [Pa s]
+  bool plasma_viscosity_is_parameter = false;
+};
+
+// The samples' points in one vector (sample by sample) with the model's joint covariance over
+// all of them: the model's errors at two samples' points are as correlated as at one sample's
+// (the same runs, the same box correction, the same nuisance values).
+JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const std::vector<double>& nuisance,
+                               double cell_radius, const std::vector<SampleTerms>& samples,
+                               double relative_discrepancy = 0.0);
+
 struct WhitenedResiduals {
   bool ok = false;                // false: Sigma is not finite and positive definite
   // W r with W Sigma W^T = I: independent, unit variance. W = L^-1 (Sigma = L L^T) where Sigma

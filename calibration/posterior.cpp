@@ -43,13 +43,33 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
   }
   if (options_.model_nuisances_as_parameters) nuisances_ = model.nuisances();
   if (!nuisances_.empty()) nuisance_index_ = static_cast<int>(names_.size());
-  for (const auto& n : nuisances_) {
-    // Truncated normal: ln(sd sqrt(2 pi) (Phi(b) - Phi(a))).
-    const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); };
-    const double mass = cdf((n.max - n.mean) / n.sd) - cdf((n.min - n.mean) / n.sd);
-    nuisance_log_normalisers_.push_back(std::log(n.sd * std::sqrt(2.0 * std::numbers::pi) * mass));
-    names_.push_back(n.name);
-  }
+  for (const auto& n : nuisances_) names_.push_back(n.name);
+}
+
+double lambda_log_prior(double x, const PosteriorOptions& options) {
+  const double lo = std::log(options.lambda_min), hi = std::log(options.lambda_max);
+  if (!(x >= lo && x <= hi)) return -std::numeric_limits<double>::infinity();
+  const double s = options.setup.lambda_prior_log_sd;
+  if (!(s > 0.0)) return -std::log(hi - lo);
+  // Normal in ln lambda about the setup's lambda (the normaliser of the truncation is a
+  // constant and left out).
+  const double z = (x - std::log(options.setup.lambda)) / s;
+  return -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
+}
+
+double normal_log_prior(double x, double mean, double sd) {
+  const double z = (x - mean) / sd;
+  if (!std::isfinite(z)) return -std::numeric_limits<double>::infinity();
+  return -0.5 * z * z - std::log(sd) - 0.5 * std::log(2.0 * std::numbers::pi);
+}
+
+double nuisance_log_prior(double v, const surrogate::ModelNuisance& n) {
+  if (!(v >= n.min && v <= n.max)) return -std::numeric_limits<double>::infinity();
+  // Truncated normal: ln(sd sqrt(2 pi) (Phi(b) - Phi(a))) normalises it.
+  const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); };
+  const double mass = cdf((n.max - n.mean) / n.sd) - cdf((n.min - n.mean) / n.sd);
+  const double z = (v - n.mean) / n.sd;
+  return -0.5 * z * z - std::log(n.sd * std::sqrt(2.0 * std::numbers::pi) * mass);
 }
 
 std::vector<double> LogPosterior::nuisance_values(const Eigen::VectorXd& theta) const {
@@ -82,39 +102,15 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
   const double ln_lo = std::log(options_.shear_modulus_min), ln_hi = std::log(options_.shear_modulus_max);
   if (!(theta(0) >= ln_lo && theta(0) <= ln_hi)) return minus_infinity;
   double log_p = -std::log(ln_hi - ln_lo);
-  if (lambda_index_ >= 0) {
-    const double lo = std::log(options_.lambda_min), hi = std::log(options_.lambda_max);
-    const double x = theta(lambda_index_);
-    if (!(x >= lo && x <= hi)) return minus_infinity;
-    const double s = options_.setup.lambda_prior_log_sd;
-    if (s > 0.0) {
-      // Normal in ln lambda about the setup's lambda (the normaliser of the truncation is a
-      // constant and left out).
-      const double z = (x - std::log(options_.setup.lambda)) / s;
-      log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
-    } else {
-      log_p -= std::log(hi - lo);
-    }
-  }
-  if (discrepancy_index_ >= 0) {
-    const double s = options_.discrepancy_prior_log_sd;
-    const double z = (theta(discrepancy_index_) - std::log(options_.discrepancy_prior_median)) / s;
-    if (!std::isfinite(z)) return minus_infinity;
-    log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
-  }
-  if (plasma_viscosity_index_ >= 0) {
-    const double s = plasma_viscosity_standard_error_ / observation_.plasma_viscosity;
-    const double z = (theta(plasma_viscosity_index_) - std::log(observation_.plasma_viscosity)) / s;
-    if (!std::isfinite(z)) return minus_infinity;
-    log_p += -0.5 * z * z - std::log(s) - 0.5 * std::log(2.0 * std::numbers::pi);
-  }
-  for (std::size_t k = 0; k < nuisances_.size(); ++k) {
-    const surrogate::ModelNuisance& n = nuisances_[k];
-    const double v = theta(nuisance_index_ + static_cast<int>(k));
-    if (!(v >= n.min && v <= n.max)) return minus_infinity;
-    const double z = (v - n.mean) / n.sd;
-    log_p += -0.5 * z * z - nuisance_log_normalisers_[k];
-  }
+  if (lambda_index_ >= 0) log_p += lambda_log_prior(theta(lambda_index_), options_);
+  if (discrepancy_index_ >= 0)
+    log_p += normal_log_prior(theta(discrepancy_index_), std::log(options_.discrepancy_prior_median),
+                              options_.discrepancy_prior_log_sd);
+  if (plasma_viscosity_index_ >= 0)
+    log_p += normal_log_prior(theta(plasma_viscosity_index_), std::log(observation_.plasma_viscosity),
+                              plasma_viscosity_standard_error_ / observation_.plasma_viscosity);
+  for (std::size_t k = 0; k < nuisances_.size(); ++k)
+    log_p += nuisance_log_prior(theta(nuisance_index_ + static_cast<int>(k)), nuisances_[k]);
   return log_p;
 }
 

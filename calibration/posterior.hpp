@@ -52,6 +52,15 @@ struct PosteriorOptions {
   bool model_nuisances_as_parameters = true;
 };
 
+// The prior terms every posterior shares, as ln densities (-inf outside the support).
+// ln lambda: normal about the setup's lambda with sd lambda_prior_log_sd, truncated to
+// [ln min, ln max] (the truncation's normaliser left out), or uniform there when that sd is 0.
+double lambda_log_prior(double ln_lambda, const PosteriorOptions& options);
+// A normal prior on x (mean, sd), normalised.
+double normal_log_prior(double x, double mean, double sd);
+// A model nuisance's truncated normal prior, normalised over its truncation.
+double nuisance_log_prior(double value, const surrogate::ModelNuisance& nuisance);
+
 class LogPosterior {
  public:
   // plasma_viscosity: the plateau estimate eta0_hat [Pa s], with its standard error.
@@ -93,7 +102,6 @@ class LogPosterior {
   int plasma_viscosity_index_ = -1;
   int nuisance_index_ = -1;
   std::vector<surrogate::ModelNuisance> nuisances_;
-  std::vector<double> nuisance_log_normalisers_;
   double plasma_viscosity_standard_error_ = 0.0;
 };
 

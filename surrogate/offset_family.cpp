@@ -149,10 +149,13 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
   const auto correlation_weight = [&](std::size_t k) { return k == lower ? 1.0 - t : k == lower + 1 ? t : 0.0; };
   // Each member is asked once: jointly where its correlation is needed, point by point elsewhere.
   const std::vector<double> w = weights(offset);
-  // In parallel over members unless already inside a parallel region (the MCMC's chains).
+  // In parallel over members for many points (the low-rank path, milliseconds a member), unless
+  // inside a parallel region already (the MCMC's chains, even one thread of them): for a few
+  // points a parallel region costs more than the members.
   std::vector<JointViscosityPrediction> member(members_.size());
   std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic) if (!omp_in_parallel())
+  const bool parallel = omp_get_level() == 0 && queries.size() > kExactJointCovarianceLimit;
+#pragma omp parallel for schedule(dynamic) if (parallel)
   for (std::size_t k = 0; k < members_.size(); ++k) {
     try {
       if (correlation_weight(k) != 0.0) {
