@@ -96,9 +96,29 @@ std::string SampleReport::brief_report() const {
 }
 
 std::string SampleComparisonReport::brief_report() const {
-  return format("G_s ratio %s / %s: %.4g  %s, P(%s > %s) = %.3f\n", numerator.c_str(), denominator.c_str(),
+  return format("G_s ratio %s / %s: %.4g  %s, P(%s > %s) = %.3f (%s)\n", numerator.c_str(), denominator.c_str(),
                 ratio.median, interval_text(ratio.interval, 1.0).c_str(), numerator.c_str(), denominator.c_str(),
-                ratio.probability_greater_than_one);
+                ratio.probability_greater_than_one, source.c_str());
+}
+
+std::string JointReport::brief_report() const {
+  const JointCalibration& j = calibration;
+  std::string out = format("joint posterior over %zu samples (model nuisances shared%s%s):\n", j.samples.size(),
+                           shared_lambda ? ", lambda shared" : "", j.hierarchical ? ", ln G_s ~ N(mu, tau)" : "");
+  for (const JointSampleEstimate& e : j.samples)
+    out += format("  G_s %-10s %.4g uN/m  %s\n", e.name.c_str(), e.shear_modulus_median * kMicro,
+                  interval_text(e.shear_modulus_interval, kMicro).c_str());
+  for (const NuisanceEstimate& n : j.nuisances)
+    out += format("  %s %.4g  %s (shared)\n", n.prior.name.c_str(), n.value, interval_text(n.interval, 1.0).c_str());
+  if (j.hierarchical)
+    out += format("  population median G_s %.4g uN/m  %s; tau (sd of ln G_s) %.3g  %s\n", j.mu_median * kMicro,
+                  interval_text(j.mu_interval, kMicro).c_str(), j.tau_median, interval_text(j.tau_interval, 1.0).c_str());
+  const McmcResult& m = j.mcmc;
+  double worst_rhat = 0.0, least_ess = 1e300;
+  for (const ParameterSummary& p : m.parameters) worst_rhat = std::max(worst_rhat, p.rhat), least_ess = std::min(least_ess, p.bulk_ess);
+  out += format("  MCMC        worst R-hat %.4f, least ESS %.0f, %d steps, %s\n", worst_rhat, least_ess, m.steps,
+                m.converged ? "converged" : ("NOT converged: " + m.stop_reason).c_str());
+  return out;
 }
 
 std::string ReportFiles::brief_report(bool plots_requested) const {

@@ -322,6 +322,8 @@ std::string CalibrationJobOptions::invalid_reason() const {
     if (!compared_samples(compare)) return "--compare " + compare + ": expected NUMERATOR/DENOMINATOR sample names";
     if (!runs("mcmc")) return "--compare needs the mcmc method (--method mcmc or all)";
   }
+  if (joint && !runs("mcmc")) return "--joint needs the mcmc method (--method mcmc or all)";
+  if ((shared_lambda || hierarchical) && !joint) return "--shared-lambda and --hierarchical need --joint";
   return "";
 }
 
@@ -342,6 +344,9 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"threads", sampler.threads},
           {"compare", compare},
           {"compare_models", compare_models},
+          {"joint", joint},
+          {"shared_lambda", shared_lambda},
+          {"hierarchical", hierarchical},
           {"mcmc_max_steps", sampler.max_steps},
           {"chains", sampler.chains},
           {"walkers", sampler.walkers},
@@ -376,6 +381,28 @@ void compare_model_variants(const SampleData& sample, const surrogate::Viscosity
             [](const auto& a, const auto& b) { return a.evidence.importance > b.evidence.importance; });
 }
 
+// The joint posterior over the named samples, each started from its direct fit (the MCMC's
+// start fit when the direct method did not run) over the points that fit used.
+JointReport joint_posterior_of(const CalibrationReport& report, const std::vector<std::string>& names,
+                               const surrogate::ViscosityModel& model, const CalibrationJobOptions& o) {
+  std::vector<JointSample> samples;
+  std::vector<DirectFitResult> fits;
+  for (const std::string& name : names) {
+    const SampleReport& r = report_of(report, name);
+    const DirectFitResult* fit = r.direct ? &*r.direct : r.mcmc ? &r.mcmc->start_fit : nullptr;
+    if (!fit) throw std::invalid_argument("sample " + name + " has no fit to start from");
+    samples.push_back({name, fit->used_points(), r.sample.plasma.eta0, r.sample.plasma.standard_error});
+    fits.push_back(*fit);
+  }
+  JointPosteriorOptions jo;
+  jo.posterior.setup = o.setup;
+  jo.shared_lambda = o.shared_lambda;
+  jo.hierarchical = o.hierarchical;
+  McmcOptions sampler = o.sampler;
+  sampler.seed = o.sampler.seed + 2;
+  return JointReport{calibrate_joint(samples, fits, model, jo, sampler), o.shared_lambda};
+}
+
 }  // namespace
 
 CalibrationReport calibrate_samples(const CalibrationInput& input, const surrogate::ViscosityModel& model,
@@ -407,17 +434,25 @@ CalibrationReport calibrate_samples(const CalibrationInput& input, const surroga
     if (o.compare_models) compare_model_variants(*s, model, o, report.samples.back());
     log << report.samples.back().brief_report() << std::flush;
   }
-  if (compare) {
-    const SampleReport& num = report_of(report, compare->first);
-    const SampleReport& den = report_of(report, compare->second);
-    if (!num.mcmc || !den.mcmc) {
-      log << "warning: --compare " << o.compare << " skipped: MCMC failed for a sample\n";
-    } else {
-      const ShearModulusRatio ratio = compare_shear_moduli(num.mcmc->shear_modulus_draws(),
-                                                           den.mcmc->shear_modulus_draws(), 0.95, o.sampler.seed + 2);
-      report.comparison = SampleComparisonReport{compare->first, compare->second, ratio};
-      log << report.comparison->brief_report();
+  if (o.joint || compare) {
+    std::vector<std::string> names;
+    if (o.joint)
+      for (const SampleReport& r : report.samples) names.push_back(r.sample.name);
+    else
+      names = {compare->first, compare->second};
+    try {
+      report.joint = joint_posterior_of(report, names, model, o);
+      log << report.joint->brief_report();
+    } catch (const std::exception& e) {
+      log << "warning: joint posterior skipped: " << e.what() << "\n";
     }
+  }
+  if (compare && report.joint) {
+    const JointCalibration& j = report.joint->calibration;
+    report.comparison = SampleComparisonReport{compare->first, compare->second,
+                                               j.ratio(j.index_of(compare->first), j.index_of(compare->second)),
+                                               "joint posterior, model nuisances shared"};
+    log << report.comparison->brief_report();
   }
   return report;
 }

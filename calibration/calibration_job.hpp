@@ -61,6 +61,13 @@ struct CalibrationJobOptions {
   // Also calibrate each sample (MCMC) with lambda fitted under its prior and held at
   // setup.lambda, and rank the two by their evidence ln Z.
   bool compare_models = false;
+  // One posterior over all selected samples (calibration/joint_posterior.hpp): the model's
+  // nuisances shared, G_s and eta0 per sample; lambda shared too with shared_lambda; a
+  // population layer ln G_s ~ N(mu, tau^2) with hierarchical. --compare always takes its ratio
+  // from a joint posterior (over the two samples compared when joint is off).
+  bool joint = false;
+  bool shared_lambda = false;
+  bool hierarchical = false;
   ReportOptions report;
   std::string command_line;              // the equivalent command, for the provenance
 

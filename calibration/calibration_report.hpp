@@ -21,6 +21,7 @@
 #include "calibration/model_reach.hpp"
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
+#include "calibration/joint_posterior.hpp"
 #include "calibration/sample_comparison.hpp"
 
 namespace rbcal::calibration {
@@ -74,6 +75,7 @@ struct SampleComparisonReport {
   std::string numerator;
   std::string denominator;
   ShearModulusRatio ratio;
+  std::string source;  // which posterior the ratio's draws came from, in words
   std::string brief_report() const;  // the ratio, its interval and P(numerator > denominator)
 };
 
@@ -86,8 +88,16 @@ struct ReportProvenance {
   std::uint64_t seed = 0;
 };
 
+// The joint posterior over several samples (--joint, or the two of --compare).
+struct JointReport {
+  JointCalibration calibration;
+  bool shared_lambda = false;
+  std::string brief_report() const;  // per sample G_s, the shared nuisances, mu and tau, diagnostics
+};
+
 struct CalibrationReport {
   std::vector<SampleReport> samples;
+  std::optional<JointReport> joint;
   std::optional<SampleComparisonReport> comparison;
   ReportProvenance provenance;
   double cell_radius = kDefaultCellRadius;  // a [m], maps the model's alpha(Ca) to shear rates

@@ -50,6 +50,7 @@ std::string command_line(const CalibrateOptions& o) {
   for (const auto& s : j.samples) line << " --sample " << s;
   for (const auto& [name, value] : j.held_nuisances) line << " --hold " << name << "=" << value;
   if (j.compare_models) line << " --compare-models";
+  if (j.joint) line << " --joint" << (j.shared_lambda ? " --shared-lambda" : "") << (j.hierarchical ? " --hierarchical" : "");
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
        << j.setup.lambda_prior_log_sd << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
@@ -116,7 +117,14 @@ void add_calibrate_command(CLI::App& app) {
                 "OpenMP threads over MCMC chains (0: OpenMP's default); results do not depend on it")
       ->check(kNonNegative)
       ->capture_default_str();
-  c->add_option("--compare", j.compare, "G_s ratio NUM/DEN of two samples with its interval (needs mcmc)");
+  c->add_option("--compare", j.compare,
+                 "G_s ratio NUM/DEN of two samples with its interval, from their joint posterior (needs mcmc)");
+  c->add_flag("--joint", j.joint,
+              "Also one posterior over all selected samples: the model's nuisances (the offset c) shared, G_s and eta0 "
+              "per sample");
+  c->add_flag("--shared-lambda", j.shared_lambda, "With --joint: one lambda for all samples");
+  c->add_flag("--hierarchical", j.hierarchical,
+              "With --joint: a population layer ln G_s ~ N(mu, tau^2); reports the population's median G_s and tau");
   c->add_flag("--compare-models", j.compare_models,
               "Also calibrate each sample by MCMC with lambda fitted and with lambda held at --lambda, and rank the two "
               "by their evidence ln Z");

@@ -43,6 +43,12 @@ TEST(CalibrationJob, ChecksItsOptionsOnceNamingTheOption) {
   o = options("direct");
   o.compare = "intact/hardened";
   EXPECT_NE(o.invalid_reason().find("--compare needs the mcmc method"), std::string::npos);
+  o = options("direct");
+  o.joint = true;
+  EXPECT_NE(o.invalid_reason().find("--joint needs the mcmc method"), std::string::npos);
+  o = options("all");
+  o.hierarchical = true;
+  EXPECT_NE(o.invalid_reason().find("need --joint"), std::string::npos);
   o = options("all");
   o.setup.cell_radius = -1.0;
   EXPECT_NE(o.invalid_reason().find("cell radius"), std::string::npos);
@@ -151,4 +157,24 @@ TEST(CalibrationJob, NamesAnIntervalEndThatTheModelsRangeCut) {
   ASSERT_TRUE(cut.samples.at(0).mcmc);
   EXPECT_TRUE(cut_warning(cut.samples[0]));
   EXPECT_GT(cut.samples[0].mcmc->shear_modulus_interval.lower, wide.samples[0].mcmc->shear_modulus_interval.lower);
+}
+
+// --joint: one posterior over both samples, whose ratio --compare reports (the synthetic truth:
+// hardened 1.0 over intact 0.5 uN/m), and the brief report that says so.
+TEST(CalibrationJob, JointPosteriorGivesTheComparison) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("mcmc");
+  o.joint = true;
+  o.compare = "hardened/intact";
+  std::ostringstream log;
+  const CalibrationReport report = calibrate_samples(input, synthetic_law(), o, log);
+  ASSERT_TRUE(report.joint) << log.str();
+  EXPECT_EQ(report.joint->calibration.samples.size(), 2u);
+  EXPECT_TRUE(report.joint->calibration.mcmc.converged) << report.joint->calibration.mcmc.stop_reason;
+  ASSERT_TRUE(report.comparison);
+  EXPECT_EQ(report.comparison->source, "joint posterior, model nuisances shared");
+  EXPECT_LT(report.comparison->ratio.interval.lower, 2.0);
+  EXPECT_GT(report.comparison->ratio.interval.upper, 2.0);
+  EXPECT_NE(log.str().find("joint posterior over 2 samples"), std::string::npos) << log.str();
+  EXPECT_NE(log.str().find("G_s ratio hardened / intact"), std::string::npos);
 }
