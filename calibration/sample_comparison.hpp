@@ -1,6 +1,8 @@
 #pragma once
 // Comparison of two samples' G_s (e.g. hardened / intact): the posterior of the ratio from
-// independent posteriors, as the ratio of randomly paired draws.
+// independent posteriors, as the ratio of randomly paired draws. `rbcal calibrate --compare`
+// takes it from a joint posterior instead (joint_posterior.hpp), where the model's shared
+// nuisances cancel; this one-at-a-time ratio is what that is measured against.
 #include <cstdint>
 #include <vector>
 
