@@ -3,12 +3,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <random>
 #include <stdexcept>
 
 #include "calibration/chain_diagnostics.hpp"
 #include "calibration/detail/independence_sampler.hpp"
+#include "formats/parallel_for.hpp"
 #include "formats/short_number.hpp"
 
 #ifdef _OPENMP
@@ -102,18 +102,26 @@ std::vector<double> McmcResult::parameter_draws(int parameter) const {
   return draws;
 }
 
-Eigen::MatrixXd McmcResult::draws() const {
-  const int d = static_cast<int>(parameter_names.size());
+namespace {
+
+// The positions of steps [first_step, steps()) of every chain, one row per draw (chain, then
+// step, then walker).
+Eigen::MatrixXd stacked_draws(const std::vector<EnsembleChain>& chains, int first_step) {
+  const int d = chains.empty() ? 0 : chains.front().dimension();
   Eigen::Index rows = 0;
-  for (const auto& chain : chains) rows += static_cast<Eigen::Index>(chain.steps() - burn_in_steps) * chain.walkers();
+  for (const auto& chain : chains) rows += static_cast<Eigen::Index>(chain.steps() - first_step) * chain.walkers();
   Eigen::MatrixXd out(rows, d);
   Eigen::Index r = 0;
   for (const auto& chain : chains)
-    for (int s = burn_in_steps; s < chain.steps(); ++s)
+    for (int s = first_step; s < chain.steps(); ++s)
       for (int w = 0; w < chain.walkers(); ++w, ++r)
         for (int p = 0; p < d; ++p) out(r, p) = chain.value(s, w, p);
   return out;
 }
+
+}  // namespace
+
+Eigen::MatrixXd McmcResult::draws() const { return stacked_draws(chains, burn_in_steps); }
 
 Eigen::VectorXd McmcResult::draw_log_densities() const {
   Eigen::Index rows = 0;
@@ -161,17 +169,8 @@ MultivariateT proposal_from(const std::vector<EnsembleSampler>& samplers, int fi
 // Advances every sampler by `steps` in parallel over chains; the first exception wins.
 template <class Sampler>
 void advance_all(std::vector<Sampler>& samplers, int steps, int threads) {
-  std::exception_ptr failure;
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-  for (int c = 0; c < static_cast<int>(samplers.size()); ++c) {
-    try {
-      samplers[c].advance(steps);
-    } catch (...) {
-#pragma omp critical
-      failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
+  formats::parallel_for(static_cast<std::ptrdiff_t>(samplers.size()), threads,
+                        [&](std::ptrdiff_t c) { samplers[static_cast<std::size_t>(c)].advance(steps); });
 }
 
 // The acceptance fraction averaged over the samplers.
@@ -243,14 +242,6 @@ double spread_ratio(const Eigen::MatrixXd& draws, const MultivariateT& proposal)
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (whitened + whitened.transpose()), Eigen::EigenvaluesOnly)
       .eigenvalues()
       .maxCoeff();
-}
-
-// Every position of the chains, one row per draw.
-Eigen::MatrixXd pooled_draws(const std::vector<EnsembleChain>& chains) {
-  McmcResult all;
-  all.chains = chains;
-  all.parameter_names.resize(static_cast<std::size_t>(chains.front().dimension()));
-  return all.draws();
 }
 
 // Where the walkers of one chain start: dimension x walkers, and their log densities.
@@ -345,7 +336,7 @@ McmcResult sample_posterior(const LogDensity& uncounted_log_density, const std::
     };
     std::vector<EnsembleChain> first;
     for (const auto& sampler : samplers) first.push_back(sampler.chain());
-    if (std::string why = too_narrow(pooled_draws(first)); !why.empty()) return why;
+    if (std::string why = too_narrow(stacked_draws(first, 0)); !why.empty()) return why;
     run_until_converged(samplers, options, first_check, steps_or(options.check_interval, 8), burn_in_or(burn_in),
                         steps_left, threads, result);
     if (std::string why = too_narrow(result.draws()); !why.empty()) return why;
@@ -361,18 +352,10 @@ McmcResult sample_posterior(const LogDensity& uncounted_log_density, const std::
       // A t with dof > 2 and this scale has dof / (dof - 2) times the Laplace covariance.
       const MultivariateT proposal(start.center, start.covariance, options.proposal_dof);
       std::vector<WalkerStart> initial(static_cast<std::size_t>(options.chains));
-      std::exception_ptr failure;
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
-      for (int c = 0; c < options.chains; ++c) {
-        try {
-          initial[static_cast<std::size_t>(c)] =
-              walkers_from(proposal, log_density, stage_walkers, derived_seed(options.seed, c, 4));
-        } catch (...) {
-#pragma omp critical
-          failure = std::current_exception();
-        }
-      }
-      if (failure) std::rethrow_exception(failure);
+      formats::parallel_for(options.chains, threads, [&](std::ptrdiff_t c) {
+        initial[static_cast<std::size_t>(c)] =
+            walkers_from(proposal, log_density, stage_walkers, derived_seed(options.seed, static_cast<int>(c), 4));
+      });
       without_pilot = try_independence(proposal, initial, options.max_steps, 0.1, true);
     } catch (const std::invalid_argument& e) {
       without_pilot = std::string("no proposal from the start's covariance (") + e.what() + ")";

@@ -1,9 +1,11 @@
 #include "calibration/model_evidence.hpp"
 
+#include "calibration/detail/independence_sampler.hpp"
+#include "formats/parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -23,17 +25,8 @@ constexpr double kDegreesOfFreedom = 4.0;
 // f at every point, in parallel (the results in the points' order).
 std::vector<double> evaluate_all(const LogDensityFunction& f, const std::vector<Eigen::VectorXd>& points, int threads) {
   std::vector<double> values(points.size());
-  std::exception_ptr failure;
-#pragma omp parallel for num_threads(threads) schedule(dynamic)
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    try {
-      values[k] = f(points[k]);
-    } catch (...) {
-#pragma omp critical
-      failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
+  formats::parallel_for(static_cast<std::ptrdiff_t>(points.size()), threads,
+                        [&](std::ptrdiff_t k) { values[static_cast<std::size_t>(k)] = f(points[static_cast<std::size_t>(k)]); });
   return values;
 }
 
@@ -192,13 +185,9 @@ ModelEvidence model_evidence(const LogDensityFunction& log_density, const Eigen:
   // Importance sampling from a t of the draws' mean and covariance, 1.2 times as wide.
   const double nu = kDegreesOfFreedom;
   const Eigen::MatrixXd shape = covariance * (1.2 * 1.2 * (nu - 2.0) / nu);
-  const Eigen::LLT<Eigen::MatrixXd> shape_llt(shape);
-  if (shape_llt.info() != Eigen::Success) throw std::invalid_argument("model evidence: the draws' covariance is singular");
-  const Eigen::MatrixXd S = shape_llt.matrixL();
-  const double ln_det_shape = 2.0 * S.diagonal().array().log().sum();
-  const double dd = static_cast<double>(d);
-  const double ln_norm = std::lgamma(0.5 * (nu + dd)) - std::lgamma(0.5 * nu) - 0.5 * dd * std::log(nu * std::numbers::pi) -
-                         0.5 * ln_det_shape;
+  if (Eigen::LLT<Eigen::MatrixXd>(shape).info() != Eigen::Success)
+    throw std::invalid_argument("model evidence: the draws' covariance is singular");
+  const MultivariateT proposal(mean.transpose(), shape, nu);
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> normal;
   std::chi_squared_distribution<double> chi2(nu);
@@ -215,10 +204,8 @@ ModelEvidence model_evidence(const LogDensityFunction& log_density, const Eigen:
     for (int k = 0; k < batch && static_cast<int>(log_w.size() + points.size()) < k_max; ++k) {
       Eigen::VectorXd z(d);
       for (Eigen::Index i = 0; i < d; ++i) z(i) = normal(rng);
-      const double u = chi2(rng);
-      points.push_back(mean.transpose() + S * z * std::sqrt(nu / u));
-      const Eigen::VectorXd delta = shape_llt.matrixL().solve(points.back() - mean.transpose());
-      ln_q.push_back(ln_norm - 0.5 * (nu + dd) * std::log1p(delta.squaredNorm() / nu));
+      points.push_back(proposal.from_standard(z, chi2(rng)));
+      ln_q.push_back(proposal.log_normaliser() + proposal.log_density(points.back()));
     }
     const std::vector<double> ln_p = evaluate_all(log_density, points, threads);
     for (std::size_t k = 0; k < points.size(); ++k)

@@ -2,13 +2,13 @@
 
 #include <omp.h>
 
-#include <exception>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
+
+#include "formats/parallel_for.hpp"
 
 namespace rbcal::surrogate {
 
@@ -153,22 +153,18 @@ JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<Visc
   // inside a parallel region already (the MCMC's chains, even one thread of them): for a few
   // points a parallel region costs more than the members.
   std::vector<JointViscosityPrediction> member(members_.size());
-  std::exception_ptr failure;
   const bool parallel = omp_get_level() == 0 && queries.size() > kExactJointCovarianceLimit;
-#pragma omp parallel for schedule(dynamic) if (parallel)
-  for (std::size_t k = 0; k < members_.size(); ++k) {
-    try {
-      if (correlation_weight(k) != 0.0) {
-        member[k] = members_[k].model->predict_joint(queries, {}, form);
-      } else if (w[k] != 0.0) {
-        member[k].points = members_[k].model->predict_many(queries);
-      }
-    } catch (...) {
-#pragma omp critical
-      failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
+  formats::parallel_for(
+      static_cast<std::ptrdiff_t>(members_.size()), 0,
+      [&](std::ptrdiff_t i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (correlation_weight(k) != 0.0) {
+          member[k] = members_[k].model->predict_joint(queries, {}, form);
+        } else if (w[k] != 0.0) {
+          member[k].points = members_[k].model->predict_many(queries);
+        }
+      },
+      parallel);
   Eigen::VectorXd sd(n), box_gradient(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Boxed b = boxed(combined(w, [&](std::size_t k) { return member[k].points[static_cast<std::size_t>(i)]; }));

@@ -25,7 +25,11 @@ Eigen::VectorXd MultivariateT::draw(std::mt19937_64& rng) const {
   std::chi_squared_distribution<double> chi_squared(dof_);
   Eigen::VectorXd z(mean_.size());
   for (Eigen::Index i = 0; i < z.size(); ++i) z(i) = normal(rng);
-  return mean_ + (lower_ * z) * std::sqrt(dof_ / chi_squared(rng));
+  return from_standard(z, chi_squared(rng));
+}
+
+Eigen::VectorXd MultivariateT::from_standard(const Eigen::VectorXd& z, double chi_squared) const {
+  return mean_ + (lower_ * z) * std::sqrt(dof_ / chi_squared);
 }
 
 double MultivariateT::log_density(const Eigen::VectorXd& x) const {

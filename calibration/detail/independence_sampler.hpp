@@ -25,6 +25,8 @@ class MultivariateT {
  public:
   MultivariateT(Eigen::VectorXd mean, const Eigen::MatrixXd& scale, double dof);
   Eigen::VectorXd draw(std::mt19937_64& rng) const;
+  // The draw made of z ~ N(0, I) and g ~ chi^2(dof): mean + L z sqrt(dof / g).
+  Eigen::VectorXd from_standard(const Eigen::VectorXd& z, double chi_squared) const;
   double log_density(const Eigen::VectorXd& x) const;  // up to an additive constant ...
   double log_normaliser() const;                         // ... which is this
   Eigen::MatrixXd covariance() const;                    // dof / (dof - 2) x scale; dof > 2
