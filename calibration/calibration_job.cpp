@@ -389,7 +389,7 @@ JointReport joint_posterior_of(const CalibrationReport& report, const std::vecto
   std::vector<DirectFitResult> fits;
   for (const std::string& name : names) {
     const SampleReport& r = report_of(report, name);
-    const DirectFitResult* fit = r.direct ? &*r.direct : r.mcmc ? &r.mcmc->start_fit : nullptr;
+    const DirectFitResult* fit = r.point_fit();
     if (!fit) throw std::invalid_argument("sample " + name + " has no fit to start from");
     samples.push_back({name, fit->used_points(), r.sample.plasma.eta0, r.sample.plasma.standard_error});
     fits.push_back(*fit);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "calibration/capillary_number.hpp"
@@ -151,19 +150,8 @@ int JointCalibration::index_of(const std::string& sample) const {
 }
 
 ShearModulusRatio JointCalibration::ratio(int a, int b, double level) const {
-  const std::vector<double>& num = samples.at(static_cast<std::size_t>(a)).shear_modulus_draws;
-  const std::vector<double>& den = samples.at(static_cast<std::size_t>(b)).shear_modulus_draws;
-  ShearModulusRatio r;
-  double above = 0.0;
-  for (std::size_t k = 0; k < num.size(); ++k) {
-    r.draws.push_back(num[k] / den[k]);
-    above += r.draws.back() > 1.0 ? 1.0 : 0.0;
-  }
-  r.median = quantile(r.draws, 0.5);
-  r.mean = std::accumulate(r.draws.begin(), r.draws.end(), 0.0) / static_cast<double>(r.draws.size());
-  r.interval = central_interval(r.draws, level);
-  r.probability_greater_than_one = above / static_cast<double>(r.draws.size());
-  return r;
+  return ratio_of_paired_draws(samples.at(static_cast<std::size_t>(a)).shear_modulus_draws,
+                               samples.at(static_cast<std::size_t>(b)).shear_modulus_draws, level);
 }
 
 JointCalibration calibrate_joint(const std::vector<JointSample>& samples, const std::vector<DirectFitResult>& fits,

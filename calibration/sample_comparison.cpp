@@ -13,7 +13,13 @@ ShearModulusRatio compare_shear_moduli(std::vector<double> numerator_draws, std:
   std::mt19937_64 rng(seed);
   std::shuffle(numerator_draws.begin(), numerator_draws.end(), rng);
   std::shuffle(denominator_draws.begin(), denominator_draws.end(), rng);
+  return ratio_of_paired_draws(numerator_draws, denominator_draws, level);
+}
+
+ShearModulusRatio ratio_of_paired_draws(const std::vector<double>& numerator_draws,
+                                        const std::vector<double>& denominator_draws, double level) {
   const std::size_t n = std::min(numerator_draws.size(), denominator_draws.size());
+  if (n == 0) throw std::invalid_argument("comparison of G_s needs draws of both samples");
   ShearModulusRatio r;
   r.draws.resize(n);
   double above = 0.0, sum = 0.0;

@@ -20,6 +20,11 @@ struct ShearModulusRatio {
 
 // Draws of G_s (any common unit). The shorter set fixes the number of pairs; both are shuffled
 // with the seed so that the pairing is random, not aligned by chain position.
+// The ratio of draws already paired (the i-th of each, as far as the shorter reaches): its
+// median, mean, central interval and P(ratio > 1).
+ShearModulusRatio ratio_of_paired_draws(const std::vector<double>& numerator_draws,
+                                        const std::vector<double>& denominator_draws, double level = 0.95);
+
 ShearModulusRatio compare_shear_moduli(std::vector<double> numerator_draws, std::vector<double> denominator_draws,
                                        double level = 0.95, std::uint64_t seed = 11);
 
