@@ -4,21 +4,13 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "formats/printf_string.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"
 
 namespace rbcal::bench {
 
-namespace {
-
-template <class... Args>
-std::string line(const char* pattern, Args... args) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, pattern, args...);
-  return buffer;
-}
-
-}  // namespace
+using formats::printf_string;
 
 CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
                                      solver::Backend backend) {
@@ -88,35 +80,37 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
 }
 
 std::string CoupledStepTimings::brief_report() const {
-  std::string s = line("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps, coupling interval %d\n",
-                       nx, ny, nz, cells, membrane_nodes, static_cast<long long>(steps), coupling_interval);
-  s += line("  fluid update (+ velocity field) %9.3f ms/step\n", fluid * 1e3);
-  s += line("  membrane forces              %9.3f ms/step\n", membrane_forces * 1e3);
-  s += line("  node ordering                %9.3f ms/step\n", ordering * 1e3);
-  s += line("  force spreading              %9.3f ms/step\n", spreading * 1e3);
-  s += line("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", indicator * 1e3,
+  std::string s =
+      printf_string("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps, coupling interval %d\n",
+                    nx, ny, nz, cells, membrane_nodes, static_cast<long long>(steps), coupling_interval);
+  s += printf_string("  fluid update (+ velocity field) %9.3f ms/step\n", fluid * 1e3);
+  s += printf_string("  membrane forces              %9.3f ms/step\n", membrane_forces * 1e3);
+  s += printf_string("  node ordering                %9.3f ms/step\n", ordering * 1e3);
+  s += printf_string("  force spreading              %9.3f ms/step\n", spreading * 1e3);
+  s += printf_string("  inside fraction + viscosity  %9.3f ms/step (rebuilt in %lld of the steps)\n", indicator * 1e3,
             static_cast<long long>(indicator_builds));
-  s += line("  interpolation + node update  %9.3f ms/step\n", interpolation * 1e3);
-  s += line("  whole step                   %9.3f ms/step\n", whole() * 1e3);
-  s += line("  plain fluid update           %9.3f ms/step (same lattice, no cells)\n", plain_fluid * 1e3);
-  s += line("  whole step / plain fluid     %9.2f (target <= 4)\n", whole() / plain_fluid);
+  s += printf_string("  interpolation + node update  %9.3f ms/step\n", interpolation * 1e3);
+  s += printf_string("  whole step                   %9.3f ms/step\n", whole() * 1e3);
+  s += printf_string("  plain fluid update           %9.3f ms/step (same lattice, no cells)\n", plain_fluid * 1e3);
+  s += printf_string("  whole step / plain fluid     %9.2f (target <= 4)\n", whole() / plain_fluid);
   if (!device.empty()) {
     const double nodes = static_cast<double>(nx) * ny * nz;
     // 19 populations read and written, force (3) and viscosity read: 336 B per node.
     constexpr double bytes_per_update = 19 * 16 + 4 * 8;
-    s += line("  device                       %s\n", device.c_str());
-    s += line("  whole step, free running     %9.3f ms/step (no synchronisation between the parts)\n",
+    s += printf_string("  device                       %s\n", device.c_str());
+    s += printf_string("  whole step, free running     %9.3f ms/step (no synchronisation between the parts)\n",
               free_running * 1e3);
-    s += line("  plain fluid                  %9.1f MLUPS, %.0f GB/s at %.0f B/update\n", nodes / plain_fluid * 1e-6,
-              nodes / plain_fluid * bytes_per_update * 1e-9, bytes_per_update);
+    s += printf_string("  plain fluid                  %9.1f MLUPS, %.0f GB/s at %.0f B/update\n",
+                       nodes / plain_fluid * 1e-6, nodes / plain_fluid * bytes_per_update * 1e-9, bytes_per_update);
     if (copy_bandwidth > 0)
-      s += line("  device copy bandwidth        %9.0f GB/s (read + written); fluid at %.1f %% of it (target >= 50 %%)\n",
-                copy_bandwidth * 1e-9, 100.0 * nodes / plain_fluid * bytes_per_update / copy_bandwidth);
+      s += printf_string(
+          "  device copy bandwidth        %9.0f GB/s (read + written); fluid at %.1f %% of it (target >= 50 %%)\n",
+          copy_bandwidth * 1e-9, 100.0 * nodes / plain_fluid * bytes_per_update / copy_bandwidth);
     const double steps_to_40 = 40.0 / strain_per_step;
-    s += line("  to strain 40                 %9.0f steps, %.1f min at the free-running step\n", steps_to_40,
+    s += printf_string("  to strain 40                 %9.0f steps, %.1f min at the free-running step\n", steps_to_40,
               steps_to_40 * free_running / 60.0);
   }
-  s += line("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling() / fluid);
+  s += printf_string("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling() / fluid);
   return s;
 }
 

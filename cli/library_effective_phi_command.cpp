@@ -2,21 +2,18 @@
 // from runs at any resolutions, each moved to the volume fraction its thickened cells fill
 // (surrogate/effective_volume_fraction.hpp); OUT/cases/ID_nN.json keep the raw values.
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli/cell_thickening.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_validators.hpp"
 #include "cli/scatter_floor_options.hpp"
-#include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
-#include "solver/membrane/thickened_volume.hpp"
-#include "solver/simulation/simulation_case.hpp"
 #include "surrogate/effective_volume_fraction.hpp"
+#include "surrogate/mapped_library_file.hpp"
 
 namespace rbcal::cli {
 
@@ -29,49 +26,18 @@ struct EffectivePhiOptions {
   ScatterFloorOptions scatter_phi;
 };
 
-// The Steiner terms of the cell the runs simulated, at radius 1 (cells.* of a case file,
-// read as `rbcal simulate` reads it; every case shares them: they are part of the numerics
-// signature).
-solver::SteinerTerms cell_terms(const surrogate::LibraryCase& c) {
-  const solver::SimulationCase run = solver::case_from_json(formats::read_json_file(c.source), c.source.string());
-  return solver::steiner_terms(solver::reference_cell(run, 1.0));
-}
-
 void run_effective_phi(const EffectivePhiOptions& o) {
-  namespace fs = std::filesystem;
   std::vector<surrogate::SimulationLibrary> tiers;
   for (const std::string& t : o.tiers) tiers.push_back(surrogate::read_library(t));
   const solver::SteinerTerms terms = cell_terms(tiers.front().cases.front());
-  const auto ratio = [&](double offset) { return solver::thickened_volume_ratio(terms, offset); };
+  const surrogate::VolumeRatio ratio = volume_ratio_of(terms);
   const surrogate::MappedLibrary mapped = surrogate::map_to_effective_volume_fraction(tiers, ratio, o.mapping);
-  // Two runs of one id at one resolution (the same point in two folders) would overwrite each other.
-  std::set<std::string> ids;
-  for (const auto& c : mapped.cases)
-    if (!ids.insert(surrogate::mapped_case_id(c)).second)
-      throw std::invalid_argument(c.raw.source.string() + ": a second run " + surrogate::mapped_case_id(c) +
-                                  " (the same point at the same N_a in two libraries)");
-  const fs::path cases_dir = formats::library_layout::cases(o.output);
-  fs::create_directories(cases_dir);
-  std::printf("rbcal library effective-phi: %zu runs from %zu librar%s -> %s\n", mapped.cases.size() + mapped.left_out.size(),
-              tiers.size(), tiers.size() == 1 ? "y" : "ies", o.output.c_str());
+  surrogate::write_mapped_library(mapped, o.mapping, o.output);
+  std::printf("%s", surrogate::describe_mapped_library(mapped, tiers.size(), o.output, ratio, o.mapping).c_str());
   std::printf("  cell at radius 1: area %.4f, volume %.4f, mean-curvature integral %.4f\n", terms.area, terms.volume,
               terms.mean_curvature_integral);
-  std::printf("  offset %g +- %g lattice spacings at N_a 8, slope %g per unit of 1 / N_a; phi_eff = g phi_actual with g:",
-              o.mapping.offset, o.mapping.offset_sd, o.mapping.offset_slope);
-  for (int n : {6, 8, 10, 12, 16}) std::printf(" %.3f (N_a %d)", ratio(o.mapping.offset_at(n) / n), n);
-  std::printf("\n  %-34s %8s %10s %8s %7s %10s %16s\n", "run", "phi", "phi_actual", "phi_eff", "g", "eta_re", "sd");
-  for (const auto& c : mapped.cases) {
-    const std::string id = surrogate::mapped_case_id(c);
-    formats::write_json_atomically(cases_dir / (id + ".json"), surrogate::mapped_case_json(c, o.mapping));
-    const fs::path series = c.raw.source.parent_path() / (c.raw.id + ".csv");
-    if (fs::exists(series)) fs::copy_file(series, cases_dir / (id + ".csv"), fs::copy_options::overwrite_existing);
-    std::printf("  %-34s %8.4g %10.4g %8.4g %7.4f %10.4g %7.2g (sem %.2g)\n", id.c_str(),
-                c.raw.phi, c.raw.phi_actual, c.phi_actual, c.volume_ratio, c.raw.eta_re, c.eta_re_sd, c.raw.eta_re_sem);
-  }
-  for (const auto& c : mapped.left_out)
-    std::printf("  left out (g phi_actual above %g): %s at N_a %d\n", o.mapping.phi_max, c.id.c_str(), c.nodes_per_radius);
-  std::printf("wrote %s (build its surrogate with `rbcal surrogate build %s`)\n", cases_dir.string().c_str(),
-              o.output.c_str());
+  std::printf("wrote %s (build its surrogate with `rbcal surrogate build %s`)\n",
+              formats::library_layout::cases(o.output).string().c_str(), o.output.c_str());
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "calibration/model_setup.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_validators.hpp"
+#include "surrogate/model_description.hpp"
 #include "surrogate/offset_family_file.hpp"
 #include "surrogate/surrogate_file.hpp"
 #include "surrogate/trend_check.hpp"
@@ -44,32 +45,6 @@ struct SurrogateFamilyOptions {
   std::string output;
 };
 
-void print_model(const surrogate::ViscositySurrogate& s) {
-  const auto& hp = s.process().hyperparameters();
-  char line[256];
-  std::printf("  training cases      %zu\n", s.training_cases().size());
-  const surrogate::ParameterRange r = s.range();
-  std::printf("  range               phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
-              r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
-  std::printf("  signal sd           %.4g (ln eta_re)\n", std::exp(0.5 * hp.log_signal_variance));
-  std::printf("  length scales       phi %.4g, ln Ca %.4g, ln lambda %.4g\n", std::exp(hp.log_length_scales(0)),
-              std::exp(hp.log_length_scales(1)), std::exp(hp.log_length_scales(2)));
-  std::printf("  nugget sd           %.3g (ln eta_re, on top of each case's SEM)\n", std::exp(0.5 * hp.log_nugget_variance));
-  std::printf("  log marginal lik.   %.6g (%d of %d starts converged)\n", s.fit_info().log_marginal_likelihood,
-              s.fit_info().starts_converged, s.fit_info().starts_tried);
-  std::printf("  predictive sd scale %.4g (held-out RMS %.3g: leave-one-out residuals against each run's own scatter, "
-              "if above 1)\n",
-              s.predictive_sd_scale(), s.held_out_rms());
-  std::string mean = "  mean ln eta_re      ";
-  const Eigen::VectorXd b = s.mean_coefficients(), sd = s.mean_coefficient_sds();
-  for (std::size_t k = 0; k < s.mean_terms().size(); ++k) {
-    std::snprintf(line, sizeof line, "%s(%.4g +- %.2g) %s", k ? " + " : "", b(static_cast<Eigen::Index>(k)),
-                  sd(static_cast<Eigen::Index>(k)), s.mean_terms()[k].c_str());
-    mean += line;
-  }
-  std::printf("%s\n", mean.c_str());
-}
-
 void run_build(const SurrogateBuildOptions& o) {
   const std::filesystem::path out =
       o.output.empty() ? std::filesystem::path(o.library) / "surrogate.json" : std::filesystem::path(o.output);
@@ -78,7 +53,7 @@ void run_build(const SurrogateBuildOptions& o) {
                                              : surrogate::build_surrogate_like(o.library, o.hyperparameters_of);
   surrogate::save_surrogate(s, out);
   std::printf("rbcal surrogate build: %s -> %s\n", o.library.c_str(), out.string().c_str());
-  print_model(s);
+  std::printf("%s", surrogate::describe_surrogate(s).c_str());
   const surrogate::LeaveOneOutReport loo = s.leave_one_out();
   std::cout << surrogate::format_leave_one_out(loo, o.warn_limit);
   for (const auto& c : loo.cases)
@@ -144,18 +119,8 @@ void run_family(const SurrogateFamilyOptions& o) {
   }
   const surrogate::OffsetFamilyModel family =
       surrogate::save_surrogate_family(std::move(members), o.prior_mean, o.prior_sd, o.output, box);
-  std::printf("rbcal surrogate family: %zu members -> %s\n", family.members().size(), o.output.c_str());
-  const surrogate::ParameterRange r = family.range();
-  std::printf("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", o.prior_mean,
-              o.prior_sd, family.members().front().offset, family.members().back().offset);
-  if (box)
-    std::printf("  box correction      beta normal(%.4g, %.4g), integrated out (%s)\n", box->prior.mean,
-                box->prior.sd, box->source.c_str());
-  std::printf("  common range        phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min, r.phi_max,
-              r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);
-  std::printf("  phi 0.41, Ca 0.8, lambda 5 (eta_re per member):");
-  for (const auto& m : family.members()) std::printf(" c %.3g: %.3f", m.offset, m.model->predict(0.41, 0.8, 5.0).eta_re);
-  std::printf("\n");
+  std::printf("rbcal surrogate family: %zu members -> %s\n%s", family.members().size(), o.output.c_str(),
+              surrogate::describe_family(family, box ? box->source : "").c_str());
 }
 
 }  // namespace

@@ -1,0 +1,68 @@
+#include "surrogate/box_twins.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "formats/printf_string.hpp"
+
+namespace rbcal::surrogate {
+
+using formats::printf_string;
+
+namespace {
+
+bool same_point(const LibraryCase& a, const LibraryCase& b) {
+  auto close = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y)); };
+  return close(a.phi, b.phi) && close(a.capillary_number, b.capillary_number) &&
+         close(a.viscosity_ratio, b.viscosity_ratio);
+}
+
+}  // namespace
+
+BoxTwinPrior box_twin_prior(const std::vector<BoxTwinFiles>& pairs) {
+  if (pairs.empty()) throw std::invalid_argument("box correction: no twin pairs given");
+  BoxTwinPrior p;
+  for (const BoxTwinFiles& f : pairs) {
+    BoxTwin t{read_library_case(f.library_box), read_library_case(f.bigger_box)};
+    if (!same_point(t.library_box, t.bigger_box))
+      throw std::invalid_argument(f.bigger_box.string() + ": not the same point (phi, Ca, lambda) as its twin " +
+                                  f.library_box.string());
+    const double e8 = t.library_box.eta_re, s8 = t.library_box.eta_re_sem;
+    const double e16 = t.bigger_box.eta_re, s16 = t.bigger_box.eta_re_sem;
+    if (!(e8 > 1.0)) throw std::invalid_argument(f.library_box.string() + ": eta_re must exceed 1 for a twin");
+    const double ln8 = std::log(e8);
+    t.beta = std::log(e16 / e8) / ln8;
+    // d beta / d e16 = 1 / (e16 ln e8); d beta / d e8 = -(1 + beta) / (e8 ln e8)
+    t.beta_se = std::hypot(s16 / (e16 * ln8), (1.0 + t.beta) * s8 / (e8 * ln8));
+    p.twins.push_back(std::move(t));
+  }
+  const double n = static_cast<double>(p.twins.size());
+  double sum = 0.0, se2 = 0.0;
+  for (const BoxTwin& t : p.twins) sum += t.beta, se2 += t.beta_se * t.beta_se;
+  p.mean_beta = sum / n;
+  double ss = 0.0;
+  for (const BoxTwin& t : p.twins) ss += (t.beta - p.mean_beta) * (t.beta - p.mean_beta);
+  p.scatter = p.twins.size() > 1 ? std::sqrt(ss / (n - 1.0)) : 0.0;
+  p.mean_se = std::sqrt(se2) / n;
+  p.mean = 1.5 * p.mean_beta;
+  const double half = 0.5 * p.mean_beta;
+  p.sd = std::sqrt(p.scatter * p.scatter + half * half + p.mean_se * p.mean_se);
+  return p;
+}
+
+std::string describe_box_twins(const BoxTwinPrior& p) {
+  std::string s = printf_string("  %-34s %10s %14s %14s %6s %15s\n", "twin", "phi_actual", "eta_re", "eta_re 2x box",
+                         "ratio", "beta");
+  for (const BoxTwin& t : p.twins)
+    s += printf_string("  %-34s %10.4g %7.3f +- %4.2f %7.3f +- %4.2f %6.3f %+7.3f +- %5.3f\n", t.library_box.id.c_str(),
+                t.library_box.phi_actual, t.library_box.eta_re, t.library_box.eta_re_sem, t.bigger_box.eta_re,
+                t.bigger_box.eta_re_sem, t.bigger_box.eta_re / t.library_box.eta_re, t.beta, t.beta_se);
+  s += printf_string("  %zu twins: mean beta %+.3f, scatter %.3f, standard error of the mean %.3f\n", p.twins.size(),
+              p.mean_beta, p.scatter, p.mean_se);
+  s += printf_string("  prior for the bulk: mean %.4f, sd %.4f (1.5 m +- sqrt(s^2 + (0.5 m)^2 + se_m^2))\n", p.mean,
+                     p.sd);
+  return s;
+}
+
+}  // namespace rbcal::surrogate

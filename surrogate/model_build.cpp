@@ -1,0 +1,149 @@
+#include "surrogate/model_build.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "formats/json_file.hpp"
+#include "formats/printf_string.hpp"
+#include "formats/provenance.hpp"
+#include "surrogate/box_twins.hpp"
+#include "surrogate/leave_one_out_report.hpp"
+#include "surrogate/mapped_library_file.hpp"
+#include "surrogate/model_description.hpp"
+#include "surrogate/offset_family_file.hpp"
+#include "surrogate/surrogate_file.hpp"
+
+namespace rbcal::surrogate {
+
+using formats::printf_string;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double rounded(double x, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(x * scale) / scale;
+}
+
+// The surrogate of the library at `root`, fitted or with `like`'s hyper-parameters, its sd
+// scale fixed when the recipe says so.
+ViscositySurrogate fit_member(const ModelRecipe& recipe, const fs::path& root, const ViscositySurrogate* like) {
+  ViscositySurrogate s = like ? ViscositySurrogate::with_hyperparameters_of(training_cases(read_library(root)), *like,
+                                                                            root.string())
+                              : build_surrogate(root);
+  if (!recipe.sd_scale) return s;
+  return ViscositySurrogate(s.training_cases(), s.process().hyperparameters(), root.string(), s.fit_info(),
+                            *recipe.sd_scale);
+}
+
+nlohmann::json with_recipe(nlohmann::json j, const ModelRecipe& recipe) {
+  j["provenance"]["recipe"] = recipe.document;
+  j["provenance"]["recipe_file"] = recipe.file.string();
+  return j;
+}
+
+// Drops the cases that are not among `keep`'s (by id).
+void keep_only(MappedLibrary& mapped, const MappedLibrary& keep) {
+  std::set<std::string> ids;
+  for (const auto& c : keep.cases) ids.insert(mapped_case_id(c));
+  std::erase_if(mapped.cases, [&](const MappedCase& c) { return !ids.count(mapped_case_id(c)); });
+}
+
+}  // namespace
+
+ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const VolumeRatio& volume_ratio,
+                       const std::function<void(const std::string&)>& progress) {
+  std::string report;
+  auto note = [&](const std::string& text) {
+    report += text;
+    if (progress) progress(text);
+  };
+  const nlohmann::json provenance = formats::provenance_block();
+  note(printf_string("rbcal model build %s -> %s (rbcal %s, %s)\n", recipe.file.string().c_str(), out.string().c_str(),
+              provenance.value("git_revision", "").c_str(), provenance.value("date", "").c_str()));
+  if (!recipe.about.empty()) note("  " + recipe.about + "\n");
+
+  // 1. The runs at their effective volume fraction.
+  std::vector<SimulationLibrary> tiers;
+  for (const fs::path& r : recipe.runs) tiers.push_back(read_library(r));
+  const MappedLibrary mapped = map_to_effective_volume_fraction(tiers, volume_ratio, recipe.mapping);
+  fs::remove_all(out / "cases");
+  write_mapped_library(mapped, recipe.mapping, out);
+  note(describe_mapped_library(mapped, tiers.size(), out, volume_ratio, recipe.mapping));
+
+  // 2. The central surrogate and its checks.
+  ViscositySurrogate central = fit_member(recipe, out, nullptr);
+  formats::write_json_atomically(out / "surrogate.json", with_recipe(surrogate_to_json(central), recipe));
+  note(printf_string("rbcal surrogate build: %s -> %s\n", out.string().c_str(),
+                     (out / "surrogate.json").string().c_str()));
+  note(describe_surrogate(central));
+  note(format_leave_one_out(central.leave_one_out()));
+  TrendCheck trends = check_trends(central);
+  note("rbcal surrogate check: " + (out / "surrogate.json").string() + "\n" + trends.report());
+  if (!trends.passed()) note("trend check FAILED (see above)\n");
+
+  // 3. The family's members.
+  const fs::path work = out / "family_members";
+  fs::remove_all(work);
+  std::vector<SurrogateFamilyMember> members;
+  for (const double c : recipe.family_offsets) {
+    if (c == recipe.mapping.offset) {
+      members.push_back({c, central});
+      continue;
+    }
+    EffectiveVolumeFractionOptions at_c = recipe.mapping;
+    at_c.offset = c;
+    // Same runs: no cut of its own; the central library's cut decides below.
+    if (recipe.same_runs) at_c.phi_max = std::nextafter(1.0, 0.0);
+    MappedLibrary member = map_to_effective_volume_fraction(tiers, volume_ratio, at_c);
+    if (recipe.same_runs) keep_only(member, mapped);
+    const fs::path root = work / printf_string("c%g", c);
+    write_mapped_library(member, at_c, root);
+    ViscositySurrogate s = fit_member(recipe, root, recipe.shared_hyperparameters ? &central : nullptr);
+    note(printf_string(
+        "family member at offset %g:\n  training cases      %zu\n  RMS relative error  %.4g (leave-one-out)\n", c,
+        s.training_cases().size(), s.leave_one_out().rms_relative_error));
+    members.push_back({c, std::move(s)});
+  }
+
+  // 4. The box correction.
+  std::optional<BoxCorrectionRecord> box;
+  if (!recipe.box_twins.empty()) {
+    const BoxTwinPrior twins = box_twin_prior(recipe.box_twins);
+    note("box correction from twin runs:\n" + describe_box_twins(twins));
+    double lo = 1.0, hi = 0.0;
+    for (const BoxTwin& t : twins.twins) {
+      const int n = t.library_box.nodes_per_radius;
+      const double phi_eff = volume_ratio(recipe.mapping.offset_at(n) / n) * t.library_box.phi_actual;
+      lo = std::min(lo, phi_eff), hi = std::max(hi, phi_eff);
+    }
+    BoxCorrectionPrior prior{twins.mean, twins.sd};
+    if (recipe.box_decimals)
+      prior = {rounded(prior.mean, *recipe.box_decimals), rounded(prior.sd, *recipe.box_decimals)};
+    box = BoxCorrectionRecord{
+        prior, printf_string(
+                   "%zu twin runs in a box twice the library's height at phi_eff %.2f-%.2f (docs/library.md, The box "
+                   "twins)",
+                   twins.twins.size(), lo, hi)};
+  }
+
+  // 5. The family.
+  const fs::path family_file = out / "surrogate_family.json";
+  const nlohmann::json family_json =
+      with_recipe(surrogate_family_to_json(members, recipe.prior_mean, recipe.prior_sd, box), recipe);
+  OffsetFamilyModel family =
+      surrogate_family_from_json(family_json, family_file.string());  // its checks, before writing
+  formats::write_json_atomically(family_file, family_json);
+  fs::remove_all(work);
+  note(printf_string("rbcal surrogate family: %zu members -> %s\n", members.size(), family_file.string().c_str()));
+  note(describe_family(family, box ? box->source : ""));
+  formats::write_file_atomically(out / "build_report.txt", report);
+  return {std::move(central), std::move(trends), std::move(family), std::move(report)};
+}
+
+}  // namespace rbcal::surrogate
