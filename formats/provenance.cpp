@@ -28,34 +28,12 @@ std::string utc_date() {
   return buf;
 }
 
-std::string build_isa() {
-  std::string isa =
-#if defined(__x86_64__)
-      "x86-64";
-#elif defined(__aarch64__)
-      "aarch64";
-#else
-      "other";
-#endif
-#if defined(__AVX512F__)
-  isa += " avx512f";
-#elif defined(__AVX2__)
-  isa += " avx2";
-#elif defined(__AVX__)
-  isa += " avx";
-#endif
-#if defined(__FMA__)
-  isa += " fma";
-#endif
-  return isa;
-}
-
 nlohmann::json provenance_block() {
   return {{"rbcal_version", build_info::version},
           {"git_revision", build_info::git_revision},
           {"date", utc_date()},
           {"host", host_name()},
-          {"build_isa", build_isa()}};
+          {"build_target", build_info::build_target}};
 }
 
 }  // namespace rbcal::formats

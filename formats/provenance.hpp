@@ -2,7 +2,9 @@
 // Where and when a file was made: the one provenance block of every file rbcal writes
 // (case results, surrogates, calibration reports, benchmarks).
 //   {"rbcal_version": "0.1.0", "git_revision": "...", "date": "2026-11-21T22:10:47Z",
-//    "host": "...", "build_isa": "x86-64 avx512f fma"}
+//    "host": "...", "build_target": "GNU 12.2.0, -march=icelake-server"}
+// build_target: the compiler and the CPU -march=native resolved to; floating-point results
+// reproduce to the last bit only between builds for one target.
 // The date is UTC; with SOURCE_DATE_EPOCH set (reproducible builds,
 // https://reproducible-builds.org/specs/source-date-epoch/) it is that time instead of
 // now, so two runs can write identical files. Writers add their own keys to the block.
@@ -13,9 +15,6 @@ namespace rbcal::formats {
 
 std::string host_name();
 std::string utc_date();  // ISO 8601, honouring SOURCE_DATE_EPOCH
-// The instruction set the build was compiled for (vector extension, FMA): floating-point
-// results reproduce to the last bit only between builds for the same one (-march=native).
-std::string build_isa();
 
 nlohmann::json provenance_block();
 

@@ -9,7 +9,7 @@
 
 #include "formats/format_error.hpp"
 #include "formats/json_file.hpp"
-#include "formats/provenance.hpp"
+#include "rbcal/build_info.hpp"
 #include "solver/membrane/thickened_volume.hpp"
 #include "solver/simulation/simulation_case.hpp"
 #include "surrogate/box_twins.hpp"
@@ -72,16 +72,16 @@ TEST(ModelBuild, TheShippedRecipeRebuildsTheShippedModel) {
     const nlohmann::json rebuilt = formats::read_json_file(out / file);
     // The files record their recipe.
     EXPECT_EQ(shipped.at("provenance").at("recipe"), formats::read_json_file(kLibrary / "recipe.json")) << file;
-    // Floating point reproduces to the last bit between builds for one instruction set. On
-    // another vector width the hyper-parameter fit rounds differently and ends within its
+    // Floating point reproduces to the last bit between builds for one target (compiler and
+    // -march). On another the hyper-parameter fit rounds differently and ends within its
     // tolerance: 1e-5 relative, as the shipped-surrogate test allows, far below the model's
     // predictive sd of several per cent.
-    const bool same_isa = shipped.at("provenance").value("build_isa", "") == formats::build_isa();
-    const double tolerance = same_isa ? 1e-12 : 1e-5;
+    const bool same_target = shipped.at("provenance").value("build_target", "") == build_info::build_target;
+    const double tolerance = same_target ? 1e-12 : 1e-5;
     double largest = 0.0;
     expect_same_model(shipped, rebuilt, tolerance, file, largest);
-    std::printf("%s: largest relative difference %.3g (build ISA %s, tolerance %g)\n", file, largest,
-                formats::build_isa().c_str(), tolerance);
+    std::printf("%s: largest relative difference %.3g (build target %s, tolerance %g)\n", file, largest,
+                build_info::build_target, tolerance);
   }
   // The mapped runs and the report are written; the members' scratch folder is gone.
   EXPECT_EQ(read_library(out).cases.size(), built.central.training_cases().size());
