@@ -20,7 +20,7 @@
 // the main job's fit turns bimodal; with it new dense runs are predicted a little worse:
 // studies/library-v2-development/README.md,
 // "The first dense runs at phi_eff 0.41-0.55, out of sample"). Its effect on eta_re itself is
-// measured by rebuilding at other c (scripts/effective_phi_check.py).
+// measured by rebuilding at other c (studies/library-v2-development/effective_phi_check.py).
 #include <functional>
 #include <string>
 #include <vector>

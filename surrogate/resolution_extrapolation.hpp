@@ -29,7 +29,7 @@ struct ExtrapolationOptions {
   // enters the sd. 1.5 is the lowest order any C 10 triplet showed (dilute high Ca from N_a
   // 8, 10, 12; phi 0.55, Ca 0.02 from 6, 8, 10), and with it the (6, 8) estimates of the
   // points run to N_a 10-12 lie within 0.7 sd of their finest pairs' values, but one dilute
-  // point at 2.3 sd (scripts/extrapolation_check.py, docs/library.md).
+  // point at 2.3 sd (studies/library-v2-development/extrapolation_check.py, docs/library.md).
   double order_low = 1.5;
   // Seed scatter: dense suspensions fluctuate slowly, so one run's blocking error
   // understates the error of its window mean (seed twins, docs/library.md). Each raw

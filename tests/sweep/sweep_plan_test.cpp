@@ -92,7 +92,7 @@ TEST(SweepPlan, AListedPlanMakesOneCasePerPointInItsOrder) {
   EXPECT_DOUBLE_EQ(plan.cases[1].spec.flow.capillary_number, 0.01);
 }
 
-// The shipped v2 plans (data/cases/library_v2/plan_n*.json, scripts/design_library_v2.py)
+// The shipped v2 plans (data/cases/library_v2/plan_n*.json, studies/library-v2-development/design_library_v2.py)
 // make the shipped v2 case files that the background runs use: same points, same numerics,
 // Re equal up to the case files' rounding to 4 digits.
 TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {

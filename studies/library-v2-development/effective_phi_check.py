@@ -2,7 +2,7 @@
 """Evidence for the effective volume fraction (docs/library.md, "The effective volume
 fraction"; issue 16, item 2), for each offset c in lattice spacings:
 
-    python3 scripts/effective_phi_check.py [--offsets 0,0.6,0.75,0.9,1.05] [--rbcal build/bin/rbcal]
+    python3 studies/library-v2-development/effective_phi_check.py [--offsets 0,0.6,0.75,0.9,1.05] [--rbcal build/bin/rbcal]
 
 1. Each tier of library v2 (data/library/v2/n6, n8) is moved to its effective volume
    fractions alone (`rbcal library effective-phi`) and its surrogate predicts the other
@@ -24,7 +24,7 @@ import tempfile
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from convergence_order import window_mean  # noqa: E402
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 TIERS = {"n6": os.path.join(ROOT, "data/library/v2/n6"), "n8": os.path.join(ROOT, "data/library/v2/n8")}
 RESULTS = os.path.join(ROOT, "data/cases/resolution_v2/results")
 # Finer runs of item 1 (phi, Ca, lambda, window, {N_a: series stem}); C 10 like the library.

@@ -3,7 +3,7 @@
 (studies/library-v2-development/README.md,
 "The (6, 8) extrapolation against the finer runs"; issue 16, item 2).
 
-    python3 scripts/extrapolation_check.py [--order 2.8] [--order-low 2,1.5,1]
+    python3 studies/library-v2-development/extrapolation_check.py [--order 2.8] [--order-low 2,1.5,1]
 
 For each reference point (Skalak C 10, runs in data/cases/resolution_v2/results/) it prints
 the window means per N_a, the estimate `rbcal library extrapolate` would make from N_a 6
@@ -19,7 +19,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from convergence_order import window_mean  # noqa: E402
 
-RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "cases", "resolution_v2", "results")
+RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "cases", "resolution_v2", "results")
 # (label, window start, window end, {N_a: series stem})
 POINTS = [
     ("phi 0.05, Ca 3.2, lambda 0.1", 4, 10, {6: "phi0.05_Ca3.2_lambda0.1_n6_c10", 8: "phi0.05_Ca3.2_lambda0.1_n8_c10",

@@ -5,7 +5,7 @@ For every design point run at both resolutions (data/library/v2/n6 and n8): the 
 the ratio (eta_6 - 1) / (eta_8 - 1) of the particle contributions, and the lowest order p
 for which the Richardson estimate eta_8 + (eta_8 - eta_6) / ((8/6)^p - 1) keeps eta_re > 1
 (a continuum suspension is more viscous than its plasma). Usage, from the repository root:
-    python3 scripts/pair_orders.py [COARSE_LIBRARY FINE_LIBRARY]
+    python3 studies/library-v2-development/pair_orders.py [COARSE_LIBRARY FINE_LIBRARY]
 """
 import glob
 import json

@@ -18,7 +18,7 @@ do not set eta_re (studies/library-v2-development/README.md, "Dense states in th
 are layered"), with the
 membrane moved by the interval's mean velocity (numerics.node_velocity, docs/performance.md).
 
-Usage: python3 scripts/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
+Usage: python3 studies/library-v2-development/design_library_v2.py [OUT_DIR]   (default data/cases/library_v2)
 writes OUT_DIR/design.csv, OUT_DIR/n6/ID.json, OUT_DIR/n8/ID.json and
 OUT_DIR/n8_h16/ID.json, and the same design as sweep plans OUT_DIR/plan_n6.json,
 plan_n8.json and plan_n8_h16.json (listed points) for `rbcal library generate` on a
@@ -120,7 +120,7 @@ def case_id(phi, ca, lam):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "data", "cases", "library_v2")
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..", "data", "cases", "library_v2")
     rng = random.Random(SEED)
     corners = [(a, b, c) for a in (0.0, 1.0) for b in (0.0, 1.0) for c in (0.0, 1.0)]
     lhs = maximin_lhs(LHS_POINTS, corners, rng)
@@ -138,7 +138,7 @@ def main():
     for tier, _, _ in TIERS:
         os.makedirs(os.path.join(out, tier), exist_ok=True)
     with open(os.path.join(out, "design.csv"), "w") as design:
-        design.write("# v2 library design (scripts/design_library_v2.py): run order, parameters, N_a 8 tier"
+        design.write("# v2 library design (studies/library-v2-development/design_library_v2.py): run order, parameters, N_a 8 tier"
                      " (1: the maximin subset, 2: round 2, phi >= ROUND2_PHI)\n")
         design.write("order,phi,Ca,lambda,at_n8\n")
         for rank, i in enumerate(order):
@@ -158,7 +158,7 @@ def main():
         del base["schema"]
         plan = {"schema": "rbcal.plan/1",
                 "description": f"Library v2 at N_a {n_a}{'' if gap == 8.0 else f' in a {gap:g}a gap'} (issue 16):"
-                               " scripts/design_library_v2.py, docs/library.md",
+                               " studies/library-v2-development/design_library_v2.py, docs/library.md",
                 "points": [list(unit_to_params(unit[i])) for i in chosen],
                 "max_shear_modulus_lattice": CAP / COUPLING_INTERVAL,
                 "base": base}

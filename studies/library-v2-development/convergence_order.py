@@ -2,7 +2,7 @@
 """Observed convergence order and Richardson estimates from three runs of one case at
 N_a = n1 < n2 < n3 (studies/library-v2-development/README.md; issue 16, items 1 and 2).
 
-    python3 scripts/convergence_order.py START END N1:SERIES1 N2:SERIES2 N3:SERIES3 [--orders 2,2.8,3]
+    python3 studies/library-v2-development/convergence_order.py START END N1:SERIES1 N2:SERIES2 N3:SERIES3 [--orders 2,2.8,3]
 
 Each SERIES is a run's series.csv; eta_re (stresslet) is averaged over [START, END] with
 the solver's blocking error (scripts/window_average.py). Prints the ratio of successive
@@ -15,7 +15,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 from window_average import block_average  # noqa: E402
 
 

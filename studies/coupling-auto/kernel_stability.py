@@ -74,7 +74,7 @@ def main():
     ap.add_argument("workdir")
     ap.add_argument("--steps", type=int, default=2000)
     ap.add_argument("--iterations", type=int, default=5)
-    ap.add_argument("--rbcal", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "rbcal"))
+    ap.add_argument("--rbcal", default=os.path.join(os.path.dirname(__file__), "..", "..", "build", "bin", "rbcal"))
     ap.add_argument("--config", action="append", required=True, help="KERNEL:K:LOW_RE:HIGH_RE")
     args = ap.parse_args()
     with open(args.case) as f:
