@@ -18,6 +18,7 @@
 #include "calibration/model_evidence.hpp"
 #include "calibration/posterior.hpp"
 #include "calibration/posterior_predictive_check.hpp"
+#include "calibration/saved_draws.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
 #include "calibration/detail/units.hpp"
@@ -225,6 +226,7 @@ class SampleCalibration {
       PredictiveCheckOptions co;
       co.seed = o_.sampler.seed + 3;
       r.predictive_check = posterior_predictive_check(model_, *r.mcmc, co);
+      r.saved_draws = saved_draws(model_, *r.mcmc, o_.saved_draws);
       const LogPosterior posterior(model_, r.mcmc->plasma_viscosity, r.mcmc->points, r.mcmc->posterior,
                                    r.mcmc->plasma_viscosity_standard_error);
       ModelEvidenceOptions eo;

@@ -54,6 +54,8 @@ struct CalibrationJobOptions {
     o.walkers = 0;
     return o;
   }();
+  // MCMC draws per sample kept for the report's posterior file and chains.csv (thinned by step).
+  int saved_draws = 4000;
   std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
   // Model nuisances held at a value instead of fitted (name, value): a sensitivity study,
   // e.g. G_s with the immersed boundary's offset held at 0.6 (surrogate/fixed_nuisance_model.hpp).

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "calibration/detail/posterior_netcdf.hpp"
 #include "calibration/detail/report_html.hpp"
 #include "calibration/detail/report_plots.hpp"
 #include "calibration/report_summary.hpp"
@@ -48,6 +49,8 @@ ReportFiles write_report_files(const CalibrationReport& report, const std::files
   write_bands_table(report, folder / "bands.csv");
   for (const char* name : {"fits.csv", "alpha.csv", "gs_per_ca.csv", "chains.csv", "bands.csv"})
     out.files.push_back(folder / name);
+  for (const SampleReport& s : report.samples)
+    if (const std::filesystem::path nc = write_posterior_netcdf(s, folder); !nc.empty()) out.files.push_back(nc);
 
   if (options.plots) {
     PlotOutcome plots = write_report_plots(report, folder, options);

@@ -21,6 +21,7 @@
 #include "calibration/model_reach.hpp"
 #include "calibration/posterior_predictive_check.hpp"
 #include "calibration/predictive_bands.hpp"
+#include "calibration/saved_draws.hpp"
 #include "calibration/joint_posterior.hpp"
 #include "calibration/sample_comparison.hpp"
 
@@ -56,6 +57,7 @@ struct SampleReport {
   double band_level = 0.95;           // the bands' probability content (PredictiveBandOptions::level)
   std::optional<PredictiveCheck> predictive_check;  // each used point in its predictive distribution (with mcmc)
   std::optional<ModelEvidence> evidence;            // ln Z of the MCMC's posterior (model_evidence.hpp)
+  std::optional<SavedDraws> saved_draws;  // thinned draws with point-wise log-likelihoods (the posterior file)
   std::vector<ModelVariantResult> model_variants;   // --compare-models, best ln Z first
   std::vector<std::string> warnings;  // method failures, points outside the model, chains not converged
   // Parameters pushed to a bound of their range, methods that disagree (consistency_check.hpp).

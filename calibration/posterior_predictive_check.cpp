@@ -79,8 +79,7 @@ PredictiveCheck posterior_predictive_check(const surrogate::ViscosityModel& mode
       const surrogate::ViscosityPrediction& p = at_draw[static_cast<std::size_t>(k)][i];
       const ObservedRelativeViscosity measured =
           observed_relative_viscosity(point, eta0_is_parameter, obs.plasma_viscosity);
-      const double noise = std::sqrt(p.sd * p.sd + std::pow(posterior.discrepancy(theta) * p.eta_re, 2) +
-                                     measured.sd * measured.sd);
+      const double noise = predictive_sd(p, posterior.discrepancy(theta), measured.sd);
       const double draw = p.eta_re + noise * normal(rng);
       predicted.push_back(p.eta_re);
       if (draw < measured.eta_re) ++below;

@@ -16,6 +16,13 @@ struct ObservedRelativeViscosity {
   double sd = 0.0;
 };
 
+// The sd of a measured eta_re about the model's at one point: the model's own predictive sd,
+// the discrepancy term (a relative sd) and the measurement error, in quadrature. What the
+// posterior predictive check draws its noise from.
+inline double predictive_sd(const surrogate::ViscosityPrediction& p, double discrepancy, double measured_sd) {
+  return std::sqrt(p.sd * p.sd + std::pow(discrepancy * p.eta_re, 2) + measured_sd * measured_sd);
+}
+
 // With eta0 fixed at the sample's estimate: the point's eta_re and eta_re_sd (eta0's error folded
 // in). With eta0 a parameter: viscosity / eta0 and viscosity_se / eta0 (eta0's error is then in
 // its prior, common to all points).

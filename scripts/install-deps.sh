@@ -8,9 +8,11 @@ packages=(
   libeigen3-dev libceres-dev libboost-math-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   gnuplot-nox
+  libnetcdf-dev  # the reports' ArviZ posterior files (NetCDF-4)
   openmpi-bin  # only mpirun, for the test of `mpirun -np K rbcal library generate`; rbcal links no MPI
   # the Python module (python/) and its tests; emcee for the side-by-side sampler benchmark
   pybind11-dev python3-dev python3-numpy python3-pytest python3-emcee
+  python3-netcdf4  # the test that reads the posterior files back
 )
 
 missing=()

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "calibration/detail/units.hpp"
+#include "calibration/saved_draws.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {
@@ -150,20 +151,14 @@ int write_chains_table(const CalibrationReport& report, const std::filesystem::p
       if (r.parameter_names[p] == "ln_sigma_d") sigma = p;
       if (r.parameter_names[p] == "ln_eta0") eta0 = p;
     }
-    long long per_step = 0;
-    for (const EnsembleChain& c : r.chains) per_step += c.walkers();
-    const long long kept_steps = std::max(0, r.steps - r.burn_in_steps);
-    const long long budget = std::max(1, max_draws_per_sample);
-    const int thin = static_cast<int>(std::max(1LL, (kept_steps * per_step + budget - 1) / budget));
+    const DrawThinning thinning = thin_draws(r, max_draws_per_sample);
     const std::string name = csv_field(s.sample.name);
     auto value = [](const EnsembleChain& c, int step, int walker, int p, double scale) {
       return p < 0 ? std::string() : number(scale * std::exp(c.value(step, walker, p)));
     };
     for (std::size_t k = 0; k < r.chains.size(); ++k) {
       const EnsembleChain& c = r.chains[k];
-      // Count back from the last step so that the final state is always in the table.
-      const int first = r.burn_in_steps + static_cast<int>((kept_steps - 1) % thin);
-      for (int step = first; step < c.steps(); step += thin)
+      for (int step = thinning.first; step < c.steps(); step += thinning.thin)
         for (int w = 0; w < c.walkers(); ++w)
           csv.row(name, k, step, w, value(c, step, w, 0, kMicro), value(c, step, w, lambda, 1.0),
                   value(c, step, w, sigma, 1.0), value(c, step, w, eta0, kMilli), number(c.log_density(step, w)));
