@@ -13,6 +13,7 @@ packages=(
   # the Python module (python/) and its tests; emcee for the side-by-side sampler benchmark
   pybind11-dev python3-dev python3-numpy python3-pytest python3-emcee
   python3-netcdf4  # the test that reads the posterior files back
+  chromium  # the test that renders report.html headless
 )
 
 missing=()

@@ -124,7 +124,7 @@ void write_report_html(const json& summary, const fs::path& folder) {
   std::ostringstream h;
   const json provenance = summary.value("provenance", json::object());
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>rbcal calibration report</title>\n"
-       "<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
+       "<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}"
        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:4px 8px;text-align:left}"
        "th{background:#eee}figure{margin:1em 0}figure svg{max-width:100%;height:auto}"
        "code{background:#f4f4f4;padding:1px 3px}</style></head><body>\n"

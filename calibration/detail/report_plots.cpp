@@ -167,6 +167,9 @@ void fit_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, 
                             "set ylabel \"viscosity eta [mPa s]\"\nplot " + plot + "\n"});
 }
 
+// Tics of a logarithmic G_s axis [uN/m]: 1, 2, 5 per decade.
+constexpr const char* kShearModulusTics = "(0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)";
+
 // (b) posterior histogram of G_s with median and credible interval (and the direct estimate).
 void posterior_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem, int index, int bins) {
   if (!s.mcmc) return;
@@ -175,24 +178,35 @@ void posterior_plot(ScriptBuilder& b, const SampleReport& s, const std::string& 
   for (double& x : draws) x *= kMicro;
   // Range from the 0.1 % and 99.9 % quantiles so that a few stray draws do not squeeze the bars.
   const double lo = quantile(draws, 0.001), hi = quantile(draws, 0.999);
-  if (!(hi > lo)) return;
+  if (!(hi > lo && lo > 0.0)) return;
+  // A posterior spread over more than a factor 4 is drawn over ln G_s (bins equal in ln G_s,
+  // density per unit of ln G_s, a logarithmic axis): on a linear axis its long right tail
+  // squeezed the bulk into a fifth of the width.
+  const bool logarithmic = hi / lo > 4.0;
+  auto axis = [&](double x) { return logarithmic ? std::log(x) : x; };
+  auto value = [&](double u) { return logarithmic ? std::exp(u) : u; };
   bins = std::max(5, bins);
-  const double width = (hi - lo) / bins;
+  const double width = (axis(hi) - axis(lo)) / bins;
   std::vector<double> counts(static_cast<std::size_t>(bins), 0.0);
   for (double x : draws) {
     if (x < lo || x > hi) continue;
-    counts[static_cast<std::size_t>(std::min(bins - 1, static_cast<int>((x - lo) / width)))] += 1.0;
+    counts[static_cast<std::size_t>(std::min(bins - 1, static_cast<int>((axis(x) - axis(lo)) / width)))] += 1.0;
   }
+  // x, density, bin edges: boxes drawn edge to edge on either axis.
   std::vector<std::vector<double>> rows;
   for (int k = 0; k < bins; ++k)
-    rows.push_back({lo + (k + 0.5) * width, counts[static_cast<std::size_t>(k)] / (draws.size() * width)});
+    rows.push_back({value(axis(lo) + (k + 0.5) * width), counts[static_cast<std::size_t>(k)] / (draws.size() * width),
+                    value(axis(lo) + k * width), value(axis(lo) + (k + 1) * width)});
   const std::string hist = b.block("s" + std::to_string(index) + "_hist", rows);
   const double median = kMicro * s.mcmc->shear_modulus_median;
   const Interval& ci = s.mcmc->shear_modulus_interval;
   std::string c = header(s.sample.name + ": posterior of G_s");
-  c += "set xlabel \"G_s [uN/m]\"\nset ylabel \"posterior density [1/(uN/m)]\"\nset boxwidth " + num(width) +
-       "\nset style fill solid 0.5\n";
-  std::string plot = hist + " using 1:2 with boxes lt 1 title \"posterior (" + std::to_string(draws.size()) + " draws)\"";
+  c += logarithmic ? "set logscale x\nset xtics " + std::string(kShearModulusTics) +
+                         "\nset ylabel \"posterior density [per unit of ln G_s]\"\n"
+                   : std::string("set ylabel \"posterior density [1/(uN/m)]\"\n");
+  c += "set xlabel \"G_s [uN/m]\"\nset xrange [" + num(lo) + ":" + num(hi) + "]\nset style fill solid 0.5\n";
+  std::string plot = hist + " using 1:(0.5*$2):3:4:(0):2 with boxxyerror lt 1 title \"posterior (" +
+                     std::to_string(draws.size()) + " draws)\"";
   // Vertical lines as parametric curves x = const, y = t over the histogram's height.
   auto vertical = [&](double x, const std::string& style, const std::string& title) {
     plot += ", \\\n  " + num(x) + ",t with lines " + style + (title.empty() ? " notitle" : " title " + quoted(title));
@@ -258,7 +272,8 @@ void gs_ca_plot(ScriptBuilder& b, const SampleReport& s, const std::string& stem
     plot += parts[k];
   }
   b.add({stem + "_gs_vs_ca", header(s.sample.name + ": G_s per capillary number (alpha method)") +
-                                 "set logscale xy\nset autoscale yfix\nset offsets 0, 0, graph 0.08, graph 0.08\nset ytics (0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100)\n"
+                                 "set logscale xy\nset autoscale yfix\nset offsets 0, 0, graph 0.08, graph 0.08\n"
+                                 "set ytics " + std::string(kShearModulusTics) + "\n"
                                  "set xlabel \"Ca = eta0 gamma_dot a / G_s [-]\"\n"
                                  "set ylabel \"G_s [uN/m]\"\nplot " + plot + "\n"});
 }
