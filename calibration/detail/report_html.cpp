@@ -118,6 +118,42 @@ void sample_section(std::ostringstream& h, const json& sample, const fs::path& f
   }
 }
 
+// The joint posterior over the samples (--joint, --compare): G_s per sample, the shared
+// nuisances, the population layer, and the comparison's ratio in words.
+void joint_section(std::ostringstream& h, const json& summary) {
+  if (summary.contains("joint")) {
+    const json& j = summary["joint"];
+    h << "<h2>Joint posterior over the samples</h2>\n<p>One posterior over all selected samples: the model's "
+         "nuisances shared, G<sub>s</sub> and eta0 per sample, lambda "
+      << (j.value("shared_lambda", false) ? "shared" : "per sample")
+      << (j.value("hierarchical", false) ? ", with a population layer ln G<sub>s</sub> ~ N(mu, tau)" : "")
+      << ".</p>\n<table><tr><th>sample</th><th>G<sub>s</sub> [uN/m]</th><th>interval</th></tr>\n";
+    for (const json& s : j.value("samples", json::array()))
+      h << "<tr><td>" << escaped(s.value("sample", "")) << "</td><td>" << number(s, "shear_modulus_median_uN_per_m")
+        << "</td><td>" << interval(s, "shear_modulus_interval_uN_per_m") << "</td></tr>\n";
+    for (const json& n : j.value("shared_nuisances", json::array()))
+      h << "<tr><td>" << escaped(n.value("name", "")) << " (shared)</td><td>" << number(n, "median") << "</td><td>"
+        << interval(n, "interval") << "</td></tr>\n";
+    if (j.contains("population")) {
+      const json& p = j["population"];
+      h << "<tr><td>population median exp(mu)</td><td>" << number(p, "median_shear_modulus_uN_per_m") << "</td><td>"
+        << interval(p, "median_shear_modulus_interval_uN_per_m") << "</td></tr>\n<tr><td>tau (sd of ln G<sub>s</sub>)"
+        << "</td><td>" << number(p, "tau") << "</td><td>" << interval(p, "tau_interval") << "</td></tr>\n";
+    }
+    h << "</table>\n";
+    if (j.contains("mcmc"))
+      h << "<p>Sampler: " << escaped(j["mcmc"].value("sampler", "")) << "; " << escaped(j["mcmc"].value("stop_reason", ""))
+        << ".</p>\n";
+  }
+  if (summary.contains("comparison")) {
+    const json& c = summary["comparison"];
+    h << "<h2>Comparison</h2>\n<p>G<sub>s</sub>(" << escaped(c.value("numerator", "")) << ") / G<sub>s</sub>("
+      << escaped(c.value("denominator", "")) << ") = " << number(c, "ratio_median") << ", " << interval(c, "interval")
+      << "; probability that the ratio exceeds 1: " << number(c, "probability_numerator_greater") << " ("
+      << number(c, "pairs") << " draws; " << escaped(c.value("source", "")) << ").</p>\n";
+  }
+}
+
 }  // namespace
 
 void write_report_html(const json& summary, const fs::path& folder) {
@@ -133,7 +169,7 @@ void write_report_html(const json& summary, const fs::path& folder) {
     << escaped(provenance.value("data_file", "")) << "</code>; model: <code>"
     << escaped(provenance.value("surrogate_file", "")) << "</code>.</p>\n";
   for (const json& sample : summary.value("samples", json::array())) sample_section(h, sample, folder);
-  if (summary.contains("comparison")) h << "<h2>Comparison</h2>\n<pre>" << escaped(summary["comparison"].dump(1)) << "</pre>\n";
+  joint_section(h, summary);
   h << "<h2>Provenance</h2>\n<table>\n";
   for (const char* key : {"rbcal_version", "git_revision", "date", "host", "command_line", "seed"})
     if (provenance.contains(key))

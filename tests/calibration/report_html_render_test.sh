@@ -26,6 +26,11 @@ done
 svgs=$(grep -c "<svg" "$dom")
 [ "$svgs" -ge 3 ] || fail "$svgs inline SVG plots"
 grep -q "<h2>Provenance" "$dom" || fail "no provenance"
+# With --compare (the synthetic report's), the joint posterior and the ratio in words.
+if grep -q '"comparison"' "$folder/summary.json"; then
+  grep -q "<h2>Joint posterior over the samples" "$dom" || fail "no joint posterior section"
+  grep -q "probability that the ratio exceeds 1" "$dom" || fail "no comparison sentence"
+fi
 # Every link names a file of the folder.
 for href in $(grep -o 'href="[^"#:]*"' "$dom" | sed 's/href="\(.*\)"/\1/' | sort -u); do
   [ -e "$folder/$href" ] || fail "link to a missing file: $href"
