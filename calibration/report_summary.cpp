@@ -228,6 +228,54 @@ nlohmann::json sample_summary(const SampleReport& s) {
   return j;
 }
 
+json joint_summary(const JointReport& joint) {
+  const JointCalibration& jc = joint.calibration;
+  json per_sample = json::array();
+  for (const JointSampleEstimate& e : jc.samples)
+    per_sample.push_back({{"sample", e.name},
+                          {"shear_modulus_median_uN_per_m", e.shear_modulus_median * kMicro},
+                          {"shear_modulus_interval_uN_per_m", interval_json(e.shear_modulus_interval, kMicro)}});
+  json nuisances = json::array();
+  for (const NuisanceEstimate& n : jc.nuisances)
+    nuisances.push_back({{"name", n.prior.name}, {"median", n.value}, {"interval", interval_json(n.interval, 1.0)}});
+  json parameters = json::array();
+  for (const ParameterSummary& p : jc.mcmc.parameters)
+    parameters.push_back({{"name", p.name},
+                          {"median", p.median},
+                          {"interval", interval_json(p.interval, 1.0)},
+                          {"rhat", p.rhat},
+                          {"bulk_ess", p.bulk_ess}});
+  json j = {{"samples", per_sample},
+            {"shared_nuisances", nuisances},
+            {"shared_lambda", joint.shared_lambda},
+            {"hierarchical", jc.hierarchical},
+            {"parameters", parameters},
+            {"mcmc",
+             {{"sampler", jc.mcmc.sampler},
+              {"steps", jc.mcmc.steps},
+              {"converged", jc.mcmc.converged},
+              {"stop_reason", jc.mcmc.stop_reason},
+              {"evaluations", jc.mcmc.evaluations}}}};
+  if (jc.hierarchical)
+    j["population"] = {{"median_shear_modulus_uN_per_m", jc.mu_median * kMicro},
+                       {"median_shear_modulus_interval_uN_per_m", interval_json(jc.mu_interval, kMicro)},
+                       {"tau", jc.tau_median},
+                       {"tau_interval", interval_json(jc.tau_interval, 1.0)}};
+  return j;
+}
+
+json comparison_summary(const SampleComparisonReport& comparison) {
+  const ShearModulusRatio& r = comparison.ratio;
+  return {{"numerator", comparison.numerator},
+          {"denominator", comparison.denominator},
+          {"source", comparison.source},
+          {"ratio_median", r.median},
+          {"ratio_mean", r.mean},
+          {"interval", interval_json(r.interval, 1.0)},
+          {"probability_numerator_greater", r.probability_greater_than_one},
+          {"pairs", r.draws.size()}};
+}
+
 nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles& files) {
   json j;
   j["schema"] = formats::kCalibrationReportSchema;
@@ -243,44 +291,8 @@ nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles
   json samples = json::array();
   for (const SampleReport& s : report.samples) samples.push_back(sample_summary(s));
   j["samples"] = samples;
-  if (report.joint) {
-    const JointCalibration& jc = report.joint->calibration;
-    json per_sample = json::array();
-    for (const JointSampleEstimate& e : jc.samples)
-      per_sample.push_back({{"sample", e.name},
-                            {"shear_modulus_median_uN_per_m", e.shear_modulus_median * kMicro},
-                            {"shear_modulus_interval_uN_per_m", interval_json(e.shear_modulus_interval, kMicro)}});
-    json nuisances = json::array();
-    for (const NuisanceEstimate& n : jc.nuisances)
-      nuisances.push_back({{"name", n.prior.name}, {"median", n.value}, {"interval", interval_json(n.interval, 1.0)}});
-    json parameters = json::array();
-    for (const ParameterSummary& p : jc.mcmc.parameters)
-      parameters.push_back({{"name", p.name}, {"median", p.median}, {"interval", interval_json(p.interval, 1.0)},
-                            {"rhat", p.rhat}, {"bulk_ess", p.bulk_ess}});
-    j["joint"] = {{"samples", per_sample},
-                  {"shared_nuisances", nuisances},
-                  {"shared_lambda", report.joint->shared_lambda},
-                  {"hierarchical", jc.hierarchical},
-                  {"parameters", parameters},
-                  {"mcmc", {{"sampler", jc.mcmc.sampler}, {"steps", jc.mcmc.steps}, {"converged", jc.mcmc.converged},
-                            {"stop_reason", jc.mcmc.stop_reason}, {"evaluations", jc.mcmc.evaluations}}}};
-    if (jc.hierarchical)
-      j["joint"]["population"] = {{"median_shear_modulus_uN_per_m", jc.mu_median * kMicro},
-                                  {"median_shear_modulus_interval_uN_per_m", interval_json(jc.mu_interval, kMicro)},
-                                  {"tau", jc.tau_median},
-                                  {"tau_interval", interval_json(jc.tau_interval, 1.0)}};
-  }
-  if (report.comparison) {
-    const ShearModulusRatio& r = report.comparison->ratio;
-    j["comparison"] = {{"numerator", report.comparison->numerator},
-                       {"denominator", report.comparison->denominator},
-                       {"source", report.comparison->source},
-                       {"ratio_median", r.median},
-                       {"ratio_mean", r.mean},
-                       {"interval", interval_json(r.interval, 1.0)},
-                       {"probability_numerator_greater", r.probability_greater_than_one},
-                       {"pairs", r.draws.size()}};
-  }
+  if (report.joint) j["joint"] = joint_summary(*report.joint);
+  if (report.comparison) j["comparison"] = comparison_summary(*report.comparison);
   json listed = json::array();
   for (const auto& f : files.files) listed.push_back(f.lexically_relative(files.folder).generic_string());
   listed.push_back("summary.json");

@@ -12,6 +12,9 @@
 namespace rbcal::calibration {
 
 nlohmann::json sample_summary(const SampleReport& sample);
+// summary.json's "joint" (the joint posterior over samples) and "comparison" (a G_s ratio).
+nlohmann::json joint_summary(const JointReport& joint);
+nlohmann::json comparison_summary(const SampleComparisonReport& comparison);
 
 // The whole summary; files and plots describe what write_calibration_report wrote.
 nlohmann::json report_summary(const CalibrationReport& report, const ReportFiles& files);

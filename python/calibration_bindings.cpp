@@ -62,7 +62,8 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
                       double cell_radius_um,
                       double plateau_min_shear_rate, double phi_max, double min_shear_rate, bool keep_out_of_order,
                       std::uint64_t seed, int threads, int mcmc_max_steps, int chains, int walkers,
-                      const std::string& sampler, const std::string& compare, const std::string& report, bool plots) {
+                      const std::string& sampler, const std::string& compare, bool joint, bool shared_lambda,
+                      bool hierarchical, const std::string& report, bool plots) {
   Calibration c;
   cal::CalibrationJobOptions& o = c.options;
   o.data_file = data;
@@ -88,6 +89,9 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
     throw py::value_error(e.what());
   }
   o.compare = compare;
+  o.joint = joint;
+  o.shared_lambda = shared_lambda;
+  o.hierarchical = hierarchical;
   o.report.plots = plots;
   o.command_line = "rbcal.calibrate (Python)";
   if (const std::string why = o.invalid_reason(); !why.empty()) throw py::value_error(why);
@@ -128,6 +132,28 @@ void bind_calibration(py::module_& m) {
                              "Per sample, the dict that summary.json holds under 'samples' (G_s in uN/m, intervals, "
                              "diagnostics, left-out points, warnings)")
       .def_property_readonly("log", [](const Calibration& c) { return c.log; }, "What the command line would print")
+      .def_property_readonly(
+          "joint",
+          [](const Calibration& c) -> py::object {
+            return c.report.joint ? to_python(cal::joint_summary(*c.report.joint)) : py::none();
+          },
+          "The joint posterior over the samples (joint=True, or with compare): the dict summary.json holds under "
+          "'joint' (G_s per sample in uN/m, shared nuisances, population layer, every parameter); None without it")
+      .def_property_readonly(
+          "comparison",
+          [](const Calibration& c) -> py::object {
+            return c.report.comparison ? to_python(cal::comparison_summary(*c.report.comparison)) : py::none();
+          },
+          "The G_s ratio of compare='A/B' from the joint posterior: median, mean, interval, probability that it "
+          "exceeds 1; None without compare")
+      .def(
+          "comparison_draws",
+          [](const Calibration& c) {
+            if (!c.report.comparison) throw py::value_error("no comparison: pass compare='NUMERATOR/DENOMINATOR'");
+            const std::vector<double>& d = c.report.comparison->ratio.draws;
+            return py::array_t<double>(static_cast<py::ssize_t>(d.size()), d.data());
+          },
+          "The draws of the G_s ratio (numerator over denominator), one per joint posterior draw")
       .def(
           "parameter_names", [](const Calibration& c, const std::string& s) { return c.mcmc(s).mcmc.parameter_names; },
           py::arg("sample"))
@@ -166,9 +192,12 @@ void bind_calibration(py::module_& m) {
         py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
         py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
         py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 0, py::arg("sampler") = "independence", py::arg("compare") = "",
+        py::arg("joint") = false, py::arg("shared_lambda") = false, py::arg("hierarchical") = false,
         py::arg("report") = "", py::arg("plots") = false,
         "G_s of each sample in a rheometer CSV against a surrogate or surrogate-family file, by the alpha method, the direct fit and MCMC "
-        "(the options and defaults of `rbcal calibrate`); report: also write the report folder there");
+        "(the options and defaults of `rbcal calibrate`); compare='A/B': their G_s ratio from a joint posterior; joint: one "
+        "posterior over all samples (shared_lambda, hierarchical as --shared-lambda, --hierarchical); report: also write "
+        "the report folder there");
 }
 
 }  // namespace rbcal::python

@@ -84,3 +84,32 @@ def test_a_surrogate_family_makes_the_offset_a_parameter(exe, data, surrogate, s
     c = mcmc["model_nuisances"]["offset_c"]
     assert 0.6 <= c["interval"]["lower"] <= c["value"] <= c["interval"]["upper"] <= 0.9
     assert "offset_c" in result.samples[0]["methods"]["direct"]["model_nuisances"]
+
+
+def test_joint_posterior_and_comparison_equal_the_command_lines(exe, data, surrogate, scratch):
+    """compare='hardened/intact' gives the ratio and the joint posterior that `rbcal calibrate
+    --compare` writes to summary.json for the same seed; the ratio's draws are an array whose
+    median is the reported one."""
+    result = rbcal.calibrate(data, surrogate, method="mcmc", mcmc_max_steps=300, chains=2, walkers=8, threads=1,
+                             min_shear_rate=0.0, seed=7, compare="hardened/intact")
+    report = scratch / "python_cli_compare_report"
+    subprocess.run([exe, "calibrate", data, "--surrogate", surrogate, "--method", "mcmc", "--mcmc-max-steps", "300",
+                    "--chains", "2", "--walkers", "8", "--threads", "1", "--min-shear-rate", "0", "--seed", "7",
+                    "--compare", "hardened/intact", "-o", str(report), "--no-plots"], check=True, capture_output=True)
+    summary = json.loads((report / "summary.json").read_text())
+    assert result.comparison["numerator"] == "hardened" and result.comparison["denominator"] == "intact"
+    assert result.comparison["ratio_median"] == pytest.approx(summary["comparison"]["ratio_median"], rel=1e-12)
+    assert result.comparison["interval"] == pytest.approx(summary["comparison"]["interval"], rel=1e-12)
+    joint = result.joint
+    assert [s["sample"] for s in joint["samples"]] == [s["sample"] for s in summary["joint"]["samples"]]
+    for mine, theirs in zip(joint["samples"], summary["joint"]["samples"]):
+        assert mine["shear_modulus_median_uN_per_m"] == pytest.approx(theirs["shear_modulus_median_uN_per_m"], rel=1e-12)
+    draws = result.comparison_draws()
+    assert draws.ndim == 1 and draws.size == result.comparison["pairs"]
+    assert np.median(draws) == pytest.approx(result.comparison["ratio_median"], rel=1e-9)
+
+
+def test_no_comparison_without_compare(python_result):
+    assert python_result.comparison is None and python_result.joint is None
+    with pytest.raises(ValueError, match="compare"):
+        python_result.comparison_draws()
