@@ -346,6 +346,11 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"threads", sampler.threads},
           {"compare", compare},
           {"compare_models", compare_models},
+          {"alternative_models", [&] {
+             std::vector<std::string> v;
+             for (const auto& f : alternative_models) v.push_back(f.string());
+             return v;
+           }()},
           {"joint", joint},
           {"shared_lambda", shared_lambda},
           {"hierarchical", hierarchical},
@@ -359,20 +364,38 @@ namespace {
 
 // The sample calibrated by MCMC under each variant of the model; the variants ranked by ln Z
 // (importance sampling), best first.
+// A model file of --alternative-model, loaded once for all samples.
+struct AlternativeModel {
+  std::filesystem::path file;
+  std::unique_ptr<surrogate::ViscosityModel> model;
+};
+
+// An alternative model is ranked with lambda as the job's setup has it.
+struct ModelVariant {
+  std::string label;
+  const surrogate::ViscosityModel* model;
+  ModelSetup setup;
+};
+
 void compare_model_variants(const SampleData& sample, const surrogate::ViscosityModel& model,
-                            const CalibrationJobOptions& o, SampleReport& r) {
-  std::vector<std::pair<std::string, ModelSetup>> variants;
+                            const std::vector<AlternativeModel>& alternatives, const CalibrationJobOptions& o,
+                            SampleReport& r) {
+  std::vector<ModelVariant> variants;
   ModelSetup fitted = o.setup, fixed = o.setup;
   fitted.fit_lambda = true;
   fixed.fit_lambda = false;
-  variants.push_back({"lambda fitted under its prior", fitted});
-  variants.push_back({"lambda fixed at " + shown(o.setup.lambda), fixed});
-  for (const auto& [label, setup] : variants) {
+  variants.push_back({"lambda fitted under its prior", &model, fitted});
+  variants.push_back({"lambda fixed at " + shown(o.setup.lambda), &model, fixed});
+  for (const AlternativeModel& a : alternatives)
+    variants.push_back({"model " + a.file.string() + (o.setup.fit_lambda ? ", lambda fitted" : ", lambda fixed"),
+                        a.model.get(), o.setup});
+  for (const auto& [label, variant_model, setup] : variants) {
     CalibrationJobOptions v = o;
     v.method = "mcmc";
     v.setup = setup;
     v.compare_models = false;
-    const SampleReport one = SampleCalibration(model, v).run(sample);
+    v.alternative_models.clear();
+    const SampleReport one = SampleCalibration(*variant_model, v).run(sample);
     if (!one.evidence || !one.mcmc) {
       r.warnings.push_back("--compare-models: " + label + ": no evidence (the MCMC failed; see a run of it alone)");
       continue;
@@ -431,9 +454,12 @@ CalibrationReport calibrate_samples(const CalibrationInput& input, const surroga
   report.cell_radius = o.setup.cell_radius;
   report.provenance = {o.data_file.string(), o.surrogate_file.string(), o.command_line, o.to_json(), o.sampler.seed};
   const SampleCalibration calibrate(model, o);
+  std::vector<AlternativeModel> alternatives;
+  for (const std::filesystem::path& f : o.alternative_models)
+    alternatives.push_back({f, surrogate::load_viscosity_model(f)});
   for (const SampleData* s : selected) {
     report.samples.push_back(calibrate.run(*s));
-    if (o.compare_models) compare_model_variants(*s, model, o, report.samples.back());
+    if (o.compare_models || !alternatives.empty()) compare_model_variants(*s, model, alternatives, o, report.samples.back());
     log << report.samples.back().brief_report() << std::flush;
   }
   if (o.joint || compare) {

@@ -63,6 +63,9 @@ struct CalibrationJobOptions {
   // Also calibrate each sample (MCMC) with lambda fitted under its prior and held at
   // setup.lambda, and rank the two by their evidence ln Z.
   bool compare_models = false;
+  // Further models (surrogate or family files) ranked with those variants: each calibrated
+  // by MCMC with lambda as in setup (another level mapping, say). Implies compare_models.
+  std::vector<std::filesystem::path> alternative_models;
   // One posterior over all selected samples (calibration/joint_posterior.hpp): the model's
   // nuisances shared, G_s and eta0 per sample; lambda shared too with shared_lambda; a
   // population layer ln G_s ~ N(mu, tau^2) with hierarchical. --compare always takes its ratio

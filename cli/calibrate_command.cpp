@@ -50,6 +50,7 @@ std::string command_line(const CalibrateOptions& o) {
   for (const auto& s : j.samples) line << " --sample " << s;
   for (const auto& [name, value] : j.held_nuisances) line << " --hold " << name << "=" << value;
   if (j.compare_models) line << " --compare-models";
+  for (const auto& f : j.alternative_models) line << " --alternative-model " << f.string();
   if (j.joint) line << " --joint" << (j.shared_lambda ? " --shared-lambda" : "") << (j.hierarchical ? " --hierarchical" : "");
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
        << j.setup.lambda_prior_log_sd << " --cell-radius-um "
@@ -128,6 +129,10 @@ void add_calibrate_command(CLI::App& app) {
   c->add_flag("--compare-models", j.compare_models,
               "Also calibrate each sample by MCMC with lambda fitted and with lambda held at --lambda, and rank the two "
               "by their evidence ln Z");
+  c->add_option("--alternative-model", j.alternative_models,
+                "Also calibrate each sample by MCMC on this model (a surrogate or family file: another level mapping, "
+                "say) and rank it with the --compare-models variants by ln Z (repeatable)")
+      ->check(CLI::ExistingFile);
   c->add_option("--hold", o->hold,
                 "Hold a model nuisance at a value instead of fitting it, NAME=VALUE (repeatable): e.g. offset_c=0.6 for "
                 "G_s at the immersed-boundary offset 0.6 (a sensitivity study)");
