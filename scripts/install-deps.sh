@@ -12,7 +12,7 @@ packages=(
   openmpi-bin  # only mpirun, for the test of `mpirun -np K rbcal library generate`; rbcal links no MPI
   # the Python module (python/) and its tests; emcee for the side-by-side sampler benchmark
   pybind11-dev python3-dev python3-numpy python3-pytest python3-emcee
-  python3-netcdf4  # the test that reads the posterior files back
+  python3-netcdf4 python3-xarray  # the test that reads the posterior files back as ArviZ does
   chromium  # the test that renders report.html headless
 )
 

@@ -2,7 +2,8 @@
 """Reads a report folder's SAMPLE_posterior.nc files (NetCDF-4, as ArviZ's InferenceData
 writes them) with netCDF4 and checks them against chains.csv: the four groups, their
 dimensions and variables, each value of chains.csv found again at (chain, step, walker),
-finite point-wise log-likelihoods over the sample's points.
+finite point-wise log-likelihoods over the sample's points; and each group opened by xarray
+(Debian's python3-xarray) as ArviZ's from_netcdf opens it, with its dimensions and coordinates.
 Usage: posterior_netcdf_check.py REPORT_FOLDER"""
 import csv
 import glob
@@ -11,6 +12,7 @@ import os
 import sys
 
 import netCDF4
+import xarray
 
 folder = sys.argv[1]
 files = sorted(glob.glob(os.path.join(folder, "*_posterior.nc")))
@@ -72,4 +74,12 @@ for path in files:
     if in_csv != n_chain * len(steps):
         sys.exit(f"FAIL: {path}: {n_chain * len(steps)} draws, chains.csv has {in_csv} for {sample}")
     d.close()
+    expected = {"posterior": {"chain", "draw"}, "sample_stats": {"chain", "draw"},
+                "log_likelihood": {"chain", "draw", "point"}, "observed_data": {"point", "phi", "shear_rate"}}
+    for group, coords in expected.items():
+        with xarray.open_dataset(path, group=group) as ds:
+            if not coords <= set(ds.coords):
+                sys.exit(f"FAIL: {path}: xarray reads group {group} with coordinates {sorted(ds.coords)}")
+            if group == "posterior" and not math.isclose(float(ds["G_s"].max()), float(values["G_s"].max()), rel_tol=1e-12):
+                sys.exit(f"FAIL: {path}: xarray's G_s differs from netCDF4's")
 print(f"PASS: {len(files)} posterior file(s), {checked} draws equal to chains.csv")
