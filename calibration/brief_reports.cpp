@@ -15,8 +15,6 @@ using formats::printf_string;
 
 namespace {
 
-constexpr double kMilli = 1e3;  // Pa s -> mPa s
-
 std::string interval_text(const Interval& i, double scale) {
   return printf_string("%.0f", 100 * i.level) + " % [" + printf_string("%.4g", scale * i.lower) + ", " +
          printf_string("%.4g", scale * i.upper) + "]";

@@ -13,8 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kMilli = 1e3;  // Pa s -> mPa s
-
 json interval_json(const Interval& i, double scale) { return {{"lower", scale * i.lower}, {"upper", scale * i.upper}, {"level", i.level}}; }
 
 json alpha_match_json(const AlphaMatch& m) {

@@ -15,8 +15,6 @@ namespace rbcal::calibration {
 
 namespace {
 
-constexpr double kMilli = 1e3;  // Pa s -> mPa s
-
 // One NetCDF-4 file open for writing; every call checked, errors name the file.
 class NetcdfFile {
  public:

@@ -20,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kMilli = 1e3;  // Pa s -> mPa s
-
 std::string num(double x) { return formats::short_number(x, 9); }
 
 // For legends: four significant digits.

@@ -15,8 +15,6 @@ namespace rbcal::calibration {
 
 namespace {
 
-constexpr double kMilli = 1e3;  // Pa s -> mPa s
-
 // Shortest round-trippable-enough text for a table (9 significant digits); empty for NaN.
 std::string number(double x) {
   return std::isfinite(x) ? formats::short_number(x, 9) : "";
