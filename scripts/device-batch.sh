@@ -14,7 +14,8 @@
 #           to .devrun.tar.xz, which the tool carries where the uncompressed folder would not
 #           fit beside the repository (scripts/gpu-check.sh unpacks it there).
 # Back here, finished cases go to RUNS/TIER/NAME.out/ (result.json, series.csv), unfinished
-# ones with their checkpoint.bin and series.csv, where scripts/run-cases.sh resumes them.
+# ones with their checkpoint.bin and series.csv, where `rbcal simulate CASE -o RUNS/TIER/NAME.out
+# --resume` continues them.
 set -u
 mode=$1; shift
 if [ "$mode" = prepare ]; then

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "formats/format_error.hpp"
+#include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 
 namespace rbcal::surrogate {
@@ -61,7 +62,12 @@ SimulationLibrary read_library(const std::filesystem::path& root) {
   for (const fs::path& f : files) lib.cases.push_back(read_library_case(f));
   check_library_consistency(lib.cases);
   const fs::path plan = formats::library_layout::plan(root);
-  if (fs::exists(plan)) lib.plan = formats::read_plan_grid(plan);
+  if (fs::exists(plan)) {
+    // A plan of case files has no grid: the cases' own values span the library.
+    const nlohmann::json document = formats::read_json_file(plan);
+    if (!(document.is_object() && document.contains("case_files")))
+      lib.plan = formats::plan_grid_from_json(document, plan.string());
+  }
   return lib;
 }
 

@@ -1,6 +1,8 @@
 #include "solver/sweep/sweep_plan.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <set>
 
 #include "formats/field_reader.hpp"
 #include "formats/json_file.hpp"
@@ -12,7 +14,36 @@ namespace rbcal::solver {
 
 SweepPlan read_sweep_plan(const std::string& path) { return sweep_plan_from_json(formats::read_json_file(path), path); }
 
+namespace {
+
+// A plan of case files: each a case file as `rbcal simulate` reads it, its id the file's stem.
+SweepPlan case_file_plan(const nlohmann::json& j, const std::string& path) {
+  const formats::FieldReader r(j, path);
+  r.expect_schema(formats::kPlanSchema);
+  r.only_known_keys("", {"schema", "description", "case_files"});
+  SweepPlan plan;
+  plan.source = path;
+  plan.document = j;
+  plan.description = r.text_or("description", "");
+  const nlohmann::json& list = r.require("case_files");
+  if (!list.is_array() || list.empty()) r.fail("case_files", "must be a non-empty array of case files");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = "case_files." + std::to_string(i);
+    const std::filesystem::path file = folder / r.text(at);
+    if (!std::filesystem::is_regular_file(file)) r.fail(at, "no such case file: " + file.string());
+    const std::string id = file.stem().string();
+    if (!ids.insert(id).second) r.fail(at, "a second case named " + id + " (ids are the files' stems)");
+    plan.cases.push_back({id, read_case(file.string())});
+  }
+  return plan;
+}
+
+}  // namespace
+
 SweepPlan sweep_plan_from_json(const nlohmann::json& j, const std::string& path) {
+  if (j.is_object() && j.contains("case_files")) return case_file_plan(j, path);
   const formats::ParameterGrid grid = formats::plan_grid_from_json(j, path);  // checks the schema too
   const formats::FieldReader r(j, path);
   SweepPlan plan;

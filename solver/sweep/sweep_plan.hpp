@@ -13,6 +13,10 @@
 // the low-Ca cases that need it.
 // Cases are ordered lambda-major, then Ca, then phi (a listed plan: in the file's order),
 // so the index of a case (for scheduler array jobs) is fixed by the plan.
+// A plan may instead name case files, each run as `rbcal simulate` would run it (its id the
+// file's stem), for cases no grid describes, e.g. the dense anchors:
+//   {"schema": "rbcal.plan/1", "description": "...", "case_files": ["cases/a.json", ...]}
+// (paths relative to the plan file; no base, grid or points then).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

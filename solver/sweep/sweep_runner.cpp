@@ -53,6 +53,30 @@ bool finished(const fs::path& lib, const std::string& id) {
   return fs::exists(formats::library_layout::case_result(lib, id));
 }
 
+// Runs (or resumes) one case. A run that the node guard stopped at a coupling interval above 1
+// continues at interval 1 from its last checkpoint, as `rbcal simulate --resume
+// --coupling-interval 1` does (equivalent numerics: docs/library.md), and stays at 1 when
+// resumed later (its coupling_interval_changes.json says it switched).
+nlohmann::json run_with_interval_fallback(const PlannedCase& pc, RunOptions ro, const SweepOptions& opt) {
+  const fs::path work = ro.output_dir;
+  if (fs::exists(work / "coupling_interval_changes.json")) ro.coupling_interval = 1;
+  try {
+    return run_case(pc.spec, ro);
+  } catch (const formats::WriteError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    const bool unstable_above_1 = ro.coupling_interval != 1 && pc.spec.coupling_interval > 1 &&
+                                  fs::exists(work / "checkpoint.bin") && fs::exists(work / "checkpoint_failed.bin");
+    if (!unstable_above_1) throw;
+    if (opt.progress)
+      *opt.progress << "[" << opt.worker << "] " << pc.id << ": unstable at coupling interval "
+                    << pc.spec.coupling_interval << " (" << e.what()
+                    << "); continuing at 1 from the last checkpoint" << std::endl;
+    ro.coupling_interval = 1;
+    return run_case(pc.spec, ro);
+  }
+}
+
 }  // namespace
 
 SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
@@ -119,7 +143,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& opt) {
     const auto t0 = std::chrono::steady_clock::now();
     nlohmann::json result;
     try {
-      result = run_case(pc.spec, ro);
+      result = run_with_interval_fallback(pc, ro, opt);
     } catch (const formats::WriteError&) {
       throw;  // the machine's failure, not the case's: the sweep stops, and the case runs again later
     } catch (const std::exception& e) {

@@ -79,7 +79,7 @@ TEST(Resume, ContinuesUnderAnotherCouplingIntervalOnlyWhenAsked) {
 
   part.coupling_interval = 1;
   // A run that fails after the switch resumes from the same checkpoint again (as
-  // scripts/run-cases.sh does): the switch is one change, not one per attempt.
+  // `rbcal library generate` does): the switch is one change, not one per attempt.
   const fs::path saved = root / "switched" / "checkpoint.bin", copy = root / "checkpoint_at_switch.bin";
   fs::copy_file(saved, copy);
   part.max_steps = 5;

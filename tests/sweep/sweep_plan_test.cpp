@@ -117,3 +117,47 @@ TEST(SweepPlan, TheV2PlansMakeTheShippedV2CaseFiles) {
     }
   }
 }
+
+// A plan may name case files instead of a grid: one case per file, its id the file's stem,
+// read as `rbcal simulate` reads it; errors name the plan and the field.
+TEST(SweepPlan, APlanOfCaseFilesRunsEachFileUnderItsStem) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rbcal_case_file_plan";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "cases");
+  const std::string base = R"({"schema": "rbcal.case/1", "params": {"phi": 0.05, "Ca": CA, "lambda": 1},
+    "cells": {"shape": "sphere", "triangles": 80, "law": "neo-hookean"},
+    "numerics": {"N_a": 4, "box": [4.0, 4.0, 4.0], "tau_out": 1.0, "Re": 0.2},
+    "run": {"strain_end": 1.0, "window": [0.5, 1.0]}})";
+  for (const auto& [name, ca] : std::map<std::string, std::string>{{"b_soft", "0.4"}, {"a_stiff", "0.01"}}) {
+    std::string text = base;
+    text.replace(text.find("CA"), 2, ca);
+    std::ofstream(dir / "cases" / (name + ".json")) << text;
+  }
+  auto plan_with = [&](const std::string& files) {
+    std::ofstream(dir / "plan.json") << R"({"schema": "rbcal.plan/1", "description": "two files", "case_files": )"
+                                     << files << "}";
+    return (dir / "plan.json").string();
+  };
+  const SweepPlan plan = read_sweep_plan(plan_with(R"(["cases/b_soft.json", "cases/a_stiff.json"])"));
+  ASSERT_EQ(plan.cases.size(), 2u);
+  EXPECT_EQ(plan.cases[0].id, "b_soft");  // the file's order, not sorted
+  EXPECT_EQ(plan.cases[1].id, "a_stiff");
+  EXPECT_DOUBLE_EQ(plan.cases[0].spec.flow.capillary_number, 0.4);
+  EXPECT_DOUBLE_EQ(plan.cases[1].spec.flow.capillary_number, 0.01);
+  auto refused = [&](const std::string& files) {
+    try {
+      read_sweep_plan(plan_with(files));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string missing = refused(R"(["cases/b_soft.json", "cases/nowhere.json"])");
+  EXPECT_NE(missing.find("plan.json"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("case_files.1"), std::string::npos) << missing;
+  const std::string twice = refused(R"(["cases/b_soft.json", "cases/../cases/b_soft.json"])");
+  EXPECT_NE(twice.find("a second case named b_soft"), std::string::npos) << twice;
+  EXPECT_NE(refused("[]").find("case_files"), std::string::npos);
+  fs::remove_all(dir);
+}
