@@ -1,8 +1,8 @@
 #pragma once
 // The cost of one coupled step of a simulation case, part by part (membrane forces, node
 // ordering, spreading, inside fraction, fluid, interpolation), against a plain fluid
-// update of the same lattice without cells, the yardstick of the wave-2 target (a whole
-// step within 4x the fluid update). The solver's guards run after every step, outside
+// update of the same lattice without cells, the yardstick of the target (a whole step
+// within 3x the fluid update, docs/performance.md). The solver's guards run after every step, outside
 // the timed parts: timings of a state that is blowing up mean nothing.
 #include <cstdint>
 #include <string>

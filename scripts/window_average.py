@@ -6,7 +6,7 @@ standard error as the solver (solver/simulation/block_average.hpp: Flyvbjerg & P
     python3 scripts/window_average.py RUN/series.csv START END [COLUMN] [--blocks WIDTH]
 
 COLUMN defaults to eta_re_stresslet. Used to compare averaging windows of one run
-(studies/library-v2-development/README.md, issue 16) without re-running it. With --blocks
+(studies/library-v2-development/README.md) without re-running it. With --blocks
 WIDTH it also prints the
 means of consecutive blocks of WIDTH strain units and the error from their scatter (sd of
 the block means / sqrt(blocks)), which sees the slow excursions of dense runs that the

@@ -1,6 +1,6 @@
 #pragma once
 // Converged eta_re from runs at any resolution, by the immersed boundary's thickening
-// (issue 16, item 2; docs/library.md, "The effective volume fraction"):
+// (docs/library.md, "The effective volume fraction"):
 //
 // A membrane spread by the immersed boundary acts thicker than its mesh: a sphere of
 // radius a acts as one of radius a + c dx (c about 0.75-0.79, docs/validation.md), and the

@@ -1,6 +1,6 @@
 #pragma once
 // Converged eta_re from two libraries of the same design points at two resolutions
-// (issue 16, item 2): a coarse library (N_a = n_c, every point) and a fine one (N_a = n_f,
+// (docs/library.md, "Extrapolation to the continuum"): a coarse library (N_a = n_c, every point) and a fine one (N_a = n_f,
 // a subset). With h = 1 / N_a and r = n_f / n_c:
 //  - a point in both: Richardson extrapolation of order p,
 //        eta = eta_f + g (eta_f - eta_c),  g = 1 / (r^p - 1),

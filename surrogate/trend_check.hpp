@@ -1,6 +1,6 @@
 #pragma once
-// The physical trends a library must show before the calibration can trust it (issue 16,
-// item 5), checked on a model over a probe grid inside its range:
+// The physical trends a library must show before the calibration can trust it, checked on a
+// model over a probe grid inside its range:
 //  - eta_re rises with phi at every (Ca, lambda) of the grid;
 //  - eta_re falls with Ca (shear thinning) at every phi >= 0.21 and lambda;
 //  - at phi 0.41, Ca 0.8, lambda 5 (or the nearest the range allows) it lies within 25 %

@@ -238,7 +238,7 @@ TEST(DirectFit, IntervalWidensWithTheAssumedPlasmaViscositysUncertainty) {
 // Data that lie below the model over its whole Ca range (here 0.7 times the model at the true
 // G_s): the unconstrained fit would carry every point beyond ca_max. The fit must not fail but
 // hold G_s where the highest shear rate reaches ca_max, use every point and call the result an
-// upper limit; the MCMC started from it must stay inside the range (issue 17, item 3).
+// upper limit; the MCMC started from it must stay inside the range.
 TEST(DirectFit, DataBelowTheModelGiveAnEdgeFitAndAnUpperLimit) {
   AnalyticViscosityModel model;
   model.box.ca_max = 2.0;

@@ -1,5 +1,5 @@
 // The shipped default surrogate is what `rbcal surrogate build data/library/default` makes
-// from the shipped library (issue 6: "reproduces the shipped surrogate"). Built with
+// from the shipped library: it reproduces the shipped surrogate. Built with
 // -march=native, a rebuild on another CPU may round differently inside the Ceres fit, so
 // hyper-parameters and predictions are compared to a relative 1e-5, far below the
 // surrogate's own predictive sd (about 1 %), not bit for bit.
@@ -40,7 +40,7 @@ TEST(ShippedSurrogate, IsRebuiltFromTheShippedLibrary) {
       }
 }
 
-// The physical trends issue 16 asks of the default library (library v2 at its effective volume
+// The physical trends asked of the default library (library v2 at its effective volume
 // fractions), on the probe grid of `rbcal surrogate check` (phi 0.05-0.55, Ca 0.01-3.2, lambda
 // 0.1-10): eta_re rises with phi everywhere, and falls with Ca at phi 0.41 for every lambda.
 // Elsewhere at phi >= 0.21 a step along Ca may be flat but must not rise by a resolvable
