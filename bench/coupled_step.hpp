@@ -29,18 +29,23 @@ struct CoupledStepTimings {
   std::string device;
   double copy_bandwidth = 0;
   double strain_per_step = 0;  // gamma_dot in lattice units
+  // Rounds of `steps` coupled and (CPU) `steps` plain fluid steps, alternating; the parts above
+  // are medians over rounds, and so are the whole step and the ratio (of each round's own).
+  int rounds = 1;
+  double whole_median = 0, ratio_median = 0;
   double whole() const { return fluid + membrane_forces + ordering + spreading + indicator + interpolation; }
+  double ratio() const { return ratio_median > 0 ? ratio_median : whole() / plain_fluid; }  // whole / plain fluid
   double coupling() const { return whole() - fluid; }
 
   std::string brief_report() const;  // the table `rbcal bench --case` prints
   nlohmann::json to_json() const;    // seconds in total over the timed steps, as before
 };
 
-// Two warm-up steps, then `steps` timed steps of the case, then as many plain fluid
-// steps. Throws std::runtime_error naming the case when it is not stable. On the device
-// backend the parts are timed with a synchronisation after each, then the step again
-// without, and the guards run once at the end.
+// Two warm-up steps, then `rounds` rounds of `steps` timed steps of the case and (CPU) as
+// many plain fluid steps. Throws std::runtime_error naming the case when it is not stable. On
+// the device backend the parts are timed with a synchronisation after each, then the step
+// again without, and the guards run once at the end.
 CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
-                                     solver::Backend backend = solver::Backend::Cpu);
+                                     solver::Backend backend = solver::Backend::Cpu, int rounds = 1);
 
 }  // namespace rbcal::bench

@@ -80,7 +80,7 @@ void run_calibration_bench(const BenchOptions& o) {
 
 void run_case_bench(const BenchOptions& o) {
   const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps,
-                                                               backend_from_option(o.backend));
+                                                               backend_from_option(o.backend), o.rounds);
   std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n  %s\n%s", o.case_path.c_str(),
               build_info::git_revision, omp_get_max_threads(), formats::host_name().c_str(),
               bench::describe_host().line().c_str(), t.brief_report().c_str());
@@ -169,7 +169,7 @@ void add_bench_command(CLI::App& app) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--steps", opts->steps, "Lattice time steps per round")->capture_default_str();
-  cmd->add_option("--rounds", opts->rounds, "Alternating triad/lattice rounds (medians are reported)")
+  cmd->add_option("--rounds", opts->rounds, "Alternating rounds (medians are reported): triad and lattice, or with --case coupled and plain fluid steps")
       ->capture_default_str();
   cmd->add_option("--triad-mib", opts->triad_mib, "Size of each STREAM-triad array [MiB]")
       ->capture_default_str();
