@@ -254,135 +254,188 @@ bool laplace_covariance(ceres::Problem& problem, const std::vector<double*>& fre
   return out->allFinite() && (out->diagonal().array() > 0.0).all();
 }
 
-}  // namespace
+// The direct fit as named steps, in the order run() takes them: set up the parameters and
+// start from a scan over ln G_s; fit the points inside the model's range, and again on the
+// set the fit moves inside, for a few rounds (or, when no G_s keeps enough points inside,
+// once more with G_s held at the edge of the model's Ca range); then read off the estimate,
+// the diagnoses (edge fit, a bound reached), the fitted points with chi^2, and the intervals.
+class DirectFit {
+ public:
+  DirectFit(const SampleData& sample, const surrogate::ViscosityModel& model, const DirectFitOptions& options)
+      : sample_(sample),
+        options_(options),
+        obs_{&model, sample.plasma.eta0, options.setup.cell_radius},
+        range_(model.range()),
+        fit_eta0_(options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample)),
+        nuisances_(options.model_nuisances_as_parameters ? model.nuisances() : std::vector<surrogate::ModelNuisance>{}) {
+    if (nuisances_.size() > kMaxModelNuisances)
+      throw std::invalid_argument("direct fit: the model has more than " + std::to_string(kMaxModelNuisances) +
+                                  " nuisance parameters");
+    n_nuisances_ = static_cast<int>(nuisances_.size());
+    name_parameters();
+    start();
+  }
 
-DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
-                           const DirectFitOptions& options) {
-  const ViscosityObservation obs{&model, sample.plasma.eta0, options.setup.cell_radius};
-  const surrogate::ParameterRange range = model.range();
-  const bool fit_eta0 = options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample);
-  const std::vector<surrogate::ModelNuisance> nuisances =
-      options.model_nuisances_as_parameters ? model.nuisances() : std::vector<surrogate::ModelNuisance>{};
-  if (nuisances.size() > kMaxModelNuisances)
-    throw std::invalid_argument("direct fit: the model has more than " + std::to_string(kMaxModelNuisances) +
-                                " nuisance parameters");
-  const int n_nuisances = static_cast<int>(nuisances.size());
-  DirectFitResult result;
-  result.plasma_viscosity_fitted = fit_eta0;
-  result.parameter_names = {"ln_G_s"};
-  if (options.setup.fit_lambda) result.parameter_names.push_back("ln_lambda");
-  if (fit_eta0) result.parameter_names.push_back("ln_eta0");
-  for (const auto& n : nuisances) result.parameter_names.push_back(n.name);
-  const int parameters = static_cast<int>(result.parameter_names.size());
-  // Parameters the data alone must fix: eta0, and lambda under its prior, have prior residuals.
-  const int fitted_to_data = options.setup.fit_lambda && options.setup.lambda_prior_log_sd <= 0.0 ? 2 : 1;
+  DirectFitResult run() {
+    for (int round = 0; round < rounds(); ++round) {
+      choose_points_and_bounds();
+      ceres::Problem problem;
+      std::vector<ceres::ResidualBlockId> normalisation_blocks;
+      add_likelihood(problem, normalisation_blocks);
+      const std::vector<double*> free_blocks = add_priors_and_bounds(problem);
+      const ceres::Solver::Summary summary = solve(problem);
+      const std::vector<bool> now_inside = select_inside(obs_, sample_.points, x_);
+      const bool last_round = edge_fit_ || round + 1 == rounds();
+      if (now_inside == used_ || last_round) {
+        settle(now_inside, summary, problem, normalisation_blocks, free_blocks);
+        break;
+      }
+      if (first_set_.empty()) first_set_ = used_;
+      used_ = now_inside;
+    }
+    read_estimate();
+    diagnose_edge_fit();
+    diagnose_bounds();
+    fitted_points();
+    intervals();
+    return result_;
+  }
 
-  FitParameters x;
-  x.ln_plasma_viscosity = std::log(sample.plasma.eta0);
-  x.ln_lambda = std::log(options.setup.lambda);
-  for (int k = 0; k < n_nuisances; ++k) x.nuisance[k] = nuisances[k].mean;  // unused ones stay 0 (finite)
-  const double ln_lambda_lo = std::log(std::max(range.lambda_min, 1e-300));
-  const double ln_lambda_hi = std::log(std::max(range.lambda_max, 1e-300));
-  if (options.setup.fit_lambda) x.ln_lambda = std::clamp(x.ln_lambda, ln_lambda_lo, ln_lambda_hi);
-  std::vector<WeightedResidual> residuals;
-  for (const auto& p : sample.points) residuals.push_back({{obs, p, fit_eta0, n_nuisances}});
-  x.ln_shear_modulus = scan_start(residuals, obs, sample.points, options, x);
-  const double ln_gs_lo = std::log(options.shear_modulus_min), ln_gs_hi = std::log(options.shear_modulus_max);
+ private:
+  static constexpr double kBoundTolerance = 1e-6;
 
-  std::vector<bool> used = select_inside(obs, sample.points, x);
+  int rounds() const { return std::max(1, options_.max_selection_rounds); }
+
+  void name_parameters() {
+    result_.plasma_viscosity_fitted = fit_eta0_;
+    result_.parameter_names = {"ln_G_s"};
+    if (options_.setup.fit_lambda) result_.parameter_names.push_back("ln_lambda");
+    if (fit_eta0_) result_.parameter_names.push_back("ln_eta0");
+    for (const auto& n : nuisances_) result_.parameter_names.push_back(n.name);
+    // Parameters the data alone must fix: eta0, and lambda under its prior, have prior residuals.
+    fitted_to_data_ = options_.setup.fit_lambda && options_.setup.lambda_prior_log_sd <= 0.0 ? 2 : 1;
+  }
+
+  // The start: eta0 at its plateau estimate, lambda at the setup's (inside the model's range),
+  // the nuisances at their prior means, ln G_s from the scan; the points inside there.
+  void start() {
+    x_.ln_plasma_viscosity = std::log(sample_.plasma.eta0);
+    x_.ln_lambda = std::log(options_.setup.lambda);
+    for (int k = 0; k < n_nuisances_; ++k) x_.nuisance[k] = nuisances_[k].mean;  // unused ones stay 0 (finite)
+    ln_lambda_lo_ = std::log(std::max(range_.lambda_min, 1e-300));
+    ln_lambda_hi_ = std::log(std::max(range_.lambda_max, 1e-300));
+    if (options_.setup.fit_lambda) x_.ln_lambda = std::clamp(x_.ln_lambda, ln_lambda_lo_, ln_lambda_hi_);
+    for (const auto& p : sample_.points) residuals_.push_back({{obs_, p, fit_eta0_, n_nuisances_}});
+    x_.ln_shear_modulus = scan_start(residuals_, obs_, sample_.points, options_, x_);
+    ln_gs_lo_ = std::log(options_.shear_modulus_min);
+    ln_gs_hi_ = std::log(options_.shear_modulus_max);
+    lo_ = ln_gs_lo_;
+    hi_ = ln_gs_hi_;
+    edge_ = {ln_gs_lo_, ln_gs_hi_};
+    used_ = select_inside(obs_, sample_.points, x_);
+  }
+
   // A fit that carries every point out of the model's Ca range means that the data lie beyond
   // the model (below it, in practice) at any G_s inside it. The fit is then repeated on every
   // point whose phi the model covers (else on the first round's set), with G_s held where all
-  // of them stay inside the Ca range: the constrained optimum, which sits on that edge (an edge
-  // fit).
-  std::vector<bool> first_set;
-  bool edge_fit = false;
-  double lo = ln_gs_lo, hi = ln_gs_hi;           // the bounds of the last solve
-  std::pair<double, double> edge{ln_gs_lo, ln_gs_hi};
-  // The parameter blocks as every residual block takes them.
-  const std::vector<double*> blocks = {&x.ln_shear_modulus, &x.ln_lambda, &x.ln_plasma_viscosity, &x.nuisance[0],
-                                       &x.nuisance[1]};
-  for (int round = 0; round < std::max(1, options.max_selection_rounds); ++round) {
-    const int n_used = static_cast<int>(std::count(used.begin(), used.end(), true));
-    if (n_used < fitted_to_data) {
-      if (first_set.empty()) {
+  // of them stay inside the Ca range: the constrained optimum, which sits on that edge (an
+  // edge fit).
+  void choose_points_and_bounds() {
+    const int n_used = static_cast<int>(std::count(used_.begin(), used_.end(), true));
+    if (n_used < fitted_to_data_) {
+      if (first_set_.empty()) {
         std::ostringstream what;
-        what << "sample '" << sample.name << "': " << n_used << " point(s) inside the model's range, need at least "
-             << fitted_to_data;
+        what << "sample '" << sample_.name << "': " << n_used << " point(s) inside the model's range, need at least "
+             << fitted_to_data_;
         throw std::invalid_argument(what.str());
       }
-      edge_fit = true;
-      for (std::size_t i = 0; i < sample.points.size(); ++i)
-        used[i] = range.contains_phi(sample.points[i].phi);
+      edge_fit_ = true;
+      for (std::size_t i = 0; i < sample_.points.size(); ++i) used_[i] = range_.contains_phi(sample_.points[i].phi);
     }
-    lo = ln_gs_lo;
-    hi = ln_gs_hi;
-    if (edge_fit) {
-      ViscosityObservation at = obs;
-      at.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
-      edge = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
-      if (!(edge.first <= edge.second) || std::count(used.begin(), used.end(), true) < fitted_to_data) {
-        used = first_set;
-        edge = ln_shear_modulus_keeping_ca_inside(at, sample.points, used, range);
-      }
-      if (edge.first <= edge.second) {
-        lo = std::max(lo, edge.first);
-        hi = std::min(hi, edge.second);
-      }
-      x.ln_shear_modulus = std::clamp(x.ln_shear_modulus, lo, hi);
+    lo_ = ln_gs_lo_;
+    hi_ = ln_gs_hi_;
+    if (!edge_fit_) return;
+    ViscosityObservation at = obs_;
+    at.plasma_viscosity = std::exp(x_.ln_plasma_viscosity);
+    edge_ = ln_shear_modulus_keeping_ca_inside(at, sample_.points, used_, range_);
+    if (!(edge_.first <= edge_.second) || std::count(used_.begin(), used_.end(), true) < fitted_to_data_) {
+      used_ = first_set_;
+      edge_ = ln_shear_modulus_keeping_ca_inside(at, sample_.points, used_, range_);
     }
-    ceres::Problem problem;
-    std::vector<ceres::ResidualBlockId> normalisation_blocks;
-    if (options.loss == RobustLoss::none) {
-      JointResidualBlock joint{obs, used_subset(sample.points, used), fit_eta0, n_nuisances};
-      problem.AddResidualBlock(joint_cost(joint), nullptr, blocks);
+    if (edge_.first <= edge_.second) {
+      lo_ = std::max(lo_, edge_.first);
+      hi_ = std::min(hi_, edge_.second);
+    }
+    x_.ln_shear_modulus = std::clamp(x_.ln_shear_modulus, lo_, hi_);
+  }
+
+  // The parameter blocks as every residual block takes them.
+  std::vector<double*> blocks() {
+    return {&x_.ln_shear_modulus, &x_.ln_lambda, &x_.ln_plasma_viscosity, &x_.nuisance[0], &x_.nuisance[1]};
+  }
+
+  // The joint likelihood of the used points (whitened residuals and normalisation), or, under
+  // a robust loss, each point's own residual (the points then taken as independent).
+  void add_likelihood(ceres::Problem& problem, std::vector<ceres::ResidualBlockId>& normalisation_blocks) {
+    const std::vector<double*> b = blocks();
+    if (options_.loss == RobustLoss::none) {
+      JointResidualBlock joint{obs_, used_subset(sample_.points, used_), fit_eta0_, n_nuisances_};
+      problem.AddResidualBlock(joint_cost(joint), nullptr, b);
       joint.normalisation = true;
-      const WhitenedResiduals start = joint.at(blocks.data());
+      const WhitenedResiduals start = joint.at(b.data());
       joint.ln_reference_determinant = start.ok ? start.log_determinant : 0.0;
-      normalisation_blocks.push_back(problem.AddResidualBlock(joint_cost(joint), nullptr, blocks));
-    } else {
-      // A robust loss acts on each point's own residual: the points are taken as independent.
-      for (std::size_t i = 0; i < sample.points.size(); ++i) {
-        if (!used[i]) continue;
-        auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
-            new WeightedResidual(residuals[i]));
-        problem.AddResidualBlock(cost, make_loss(options), blocks);
-      }
+      normalisation_blocks.push_back(problem.AddResidualBlock(joint_cost(joint), nullptr, b));
+      return;
     }
-    std::vector<double*> free_blocks = {&x.ln_shear_modulus};
-    problem.SetParameterLowerBound(&x.ln_shear_modulus, 0, lo);
-    problem.SetParameterUpperBound(&x.ln_shear_modulus, 0, hi);
-    if (options.setup.fit_lambda) {
-      problem.SetParameterLowerBound(&x.ln_lambda, 0, ln_lambda_lo);
-      problem.SetParameterUpperBound(&x.ln_lambda, 0, ln_lambda_hi);
-      free_blocks.push_back(&x.ln_lambda);
-      if (options.setup.lambda_prior_log_sd > 0.0)
+    for (std::size_t i = 0; i < sample_.points.size(); ++i) {
+      if (!used_[i]) continue;
+      auto* cost = new ceres::NumericDiffCostFunction<WeightedResidual, ceres::CENTRAL, 1, 1, 1, 1, 1, 1>(
+          new WeightedResidual(residuals_[i]));
+      problem.AddResidualBlock(cost, make_loss(options_), b);
+    }
+  }
+
+  // Bounds, priors as residuals, the held blocks constant; returns the free blocks in the
+  // order of the result's parameters.
+  std::vector<double*> add_priors_and_bounds(ceres::Problem& problem) {
+    std::vector<double*> free_blocks = {&x_.ln_shear_modulus};
+    problem.SetParameterLowerBound(&x_.ln_shear_modulus, 0, lo_);
+    problem.SetParameterUpperBound(&x_.ln_shear_modulus, 0, hi_);
+    if (options_.setup.fit_lambda) {
+      problem.SetParameterLowerBound(&x_.ln_lambda, 0, ln_lambda_lo_);
+      problem.SetParameterUpperBound(&x_.ln_lambda, 0, ln_lambda_hi_);
+      free_blocks.push_back(&x_.ln_lambda);
+      if (options_.setup.lambda_prior_log_sd > 0.0)
         problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(new GaussianPrior{
-                                     std::log(options.setup.lambda), options.setup.lambda_prior_log_sd}),
-                                 nullptr, &x.ln_lambda);
+                                     std::log(options_.setup.lambda), options_.setup.lambda_prior_log_sd}),
+                                 nullptr, &x_.ln_lambda);
     } else {
-      problem.SetParameterBlockConstant(&x.ln_lambda);
+      problem.SetParameterBlockConstant(&x_.ln_lambda);
     }
-    if (fit_eta0) {
+    if (fit_eta0_) {
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(new GaussianPrior{
-                                   std::log(sample.plasma.eta0), sample.plasma.standard_error / sample.plasma.eta0}),
-                               nullptr, &x.ln_plasma_viscosity);
-      free_blocks.push_back(&x.ln_plasma_viscosity);
+                                   std::log(sample_.plasma.eta0), sample_.plasma.standard_error / sample_.plasma.eta0}),
+                               nullptr, &x_.ln_plasma_viscosity);
+      free_blocks.push_back(&x_.ln_plasma_viscosity);
     } else {
-      problem.SetParameterBlockConstant(&x.ln_plasma_viscosity);
+      problem.SetParameterBlockConstant(&x_.ln_plasma_viscosity);
     }
     for (int k = 0; k < kMaxModelNuisances; ++k) {
-      if (k >= n_nuisances) {
-        problem.SetParameterBlockConstant(&x.nuisance[k]);
+      if (k >= n_nuisances_) {
+        problem.SetParameterBlockConstant(&x_.nuisance[k]);
         continue;
       }
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GaussianPrior, 1, 1>(
-                                   new GaussianPrior{nuisances[k].mean, nuisances[k].sd}),
-                               nullptr, &x.nuisance[k]);
-      problem.SetParameterLowerBound(&x.nuisance[k], 0, nuisances[k].min);
-      problem.SetParameterUpperBound(&x.nuisance[k], 0, nuisances[k].max);
-      free_blocks.push_back(&x.nuisance[k]);
+                                   new GaussianPrior{nuisances_[k].mean, nuisances_[k].sd}),
+                               nullptr, &x_.nuisance[k]);
+      problem.SetParameterLowerBound(&x_.nuisance[k], 0, nuisances_[k].min);
+      problem.SetParameterUpperBound(&x_.nuisance[k], 0, nuisances_[k].max);
+      free_blocks.push_back(&x_.nuisance[k]);
     }
+    return free_blocks;
+  }
+
+  static ceres::Solver::Summary solve(ceres::Problem& problem) {
     ceres::Solver::Options solver_options;
     solver_options.minimizer_type = ceres::TRUST_REGION;  // bounds need it
     solver_options.linear_solver_type = ceres::DENSE_QR;
@@ -394,121 +447,154 @@ DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityM
     solver_options.gradient_tolerance = 1e-14;
     ceres::Solver::Summary summary;
     ceres::Solve(solver_options, &problem, &summary);
-
-    const std::vector<bool> now_inside = select_inside(obs, sample.points, x);
-    const bool last_round = edge_fit || round + 1 == std::max(1, options.max_selection_rounds);
-    if (now_inside == used || last_round) {
-      if (now_inside != used && !edge_fit) {
-        result.point_set_settled = false;
-        result.messages.push_back(kPointSetUnsettled);
-      }
-      result.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
-      result.solver_report = summary.BriefReport();
-      // The covariance of the weighted residuals and priors (Gauss-Newton): the normalisation
-      // terms are not sums of squares, and their Gauss-Newton part would depend on K.
-      for (ceres::ResidualBlockId id : normalisation_blocks) problem.RemoveResidualBlock(id);
-      result.covariance_ok = laplace_covariance(problem, free_blocks, &result.covariance);
-      if (!result.covariance_ok) {
-        result.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
-        result.messages.push_back("Laplace covariance failed (Jacobian rank deficient): no interval");
-      }
-      break;
-    }
-    if (first_set.empty()) first_set = used;
-    used = now_inside;
+    return summary;
   }
 
-  result.estimate.resize(parameters);
-  result.estimate(0) = x.ln_shear_modulus;
-  if (options.setup.fit_lambda) result.estimate(1) = x.ln_lambda;
-  if (fit_eta0) result.estimate(result.index_of("ln_eta0")) = x.ln_plasma_viscosity;
-  for (int k = 0; k < n_nuisances; ++k) result.estimate(result.index_of(nuisances[k].name)) = x.nuisance[k];
-  result.shear_modulus = std::exp(x.ln_shear_modulus);
-  result.lambda = std::exp(x.ln_lambda);
-  result.plasma_viscosity = std::exp(x.ln_plasma_viscosity);
-  const double bound_tolerance = 1e-6;
-  if (edge_fit) {
-    const bool low_edge = x.ln_shear_modulus - edge.first < bound_tolerance;
-    const bool high_edge = edge.second - x.ln_shear_modulus < bound_tolerance;
-    if (low_edge || high_edge) {
-      result.model_edge = low_edge ? ModelEdge::largest_ca : ModelEdge::smallest_ca;
-      std::ostringstream what;
-      what << "no G_s fits the data inside the model's Ca range " << range.ca_min << " to " << range.ca_max
-           << ": the best fit carries every point out of it, so G_s is held where the "
-           << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range.ca_max : range.ca_min)
-           << "; read G_s = " << std::exp(x.ln_shear_modulus) * kMicro << " uN/m as an "
-           << limit_kind(result.model_edge) << " limit, not an estimate (the data lie "
-           << (low_edge ? "below" : "above") << " the model)";
-      result.model_edge_reason = what.str();
-      result.messages.push_back(result.model_edge_reason);
+  // The last round: convergence, and the covariance of the weighted residuals and priors
+  // (Gauss-Newton; the normalisation terms are not sums of squares, and their Gauss-Newton
+  // part would depend on K).
+  void settle(const std::vector<bool>& now_inside, const ceres::Solver::Summary& summary, ceres::Problem& problem,
+              const std::vector<ceres::ResidualBlockId>& normalisation_blocks, const std::vector<double*>& free_blocks) {
+    if (now_inside != used_ && !edge_fit_) {
+      result_.point_set_settled = false;
+      result_.messages.push_back(kPointSetUnsettled);
+    }
+    result_.converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
+    result_.solver_report = summary.BriefReport();
+    for (ceres::ResidualBlockId id : normalisation_blocks) problem.RemoveResidualBlock(id);
+    result_.covariance_ok = laplace_covariance(problem, free_blocks, &result_.covariance);
+    if (!result_.covariance_ok) {
+      result_.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
+      result_.messages.push_back("Laplace covariance failed (Jacobian rank deficient): no interval");
     }
   }
-  result.at_bound =
-      x.ln_shear_modulus - lo < bound_tolerance || hi - x.ln_shear_modulus < bound_tolerance ||
-      (options.setup.fit_lambda &&
-       (x.ln_lambda - ln_lambda_lo < bound_tolerance || ln_lambda_hi - x.ln_lambda < bound_tolerance)) ||
-      [&] {
-        for (int k = 0; k < n_nuisances; ++k)
-          if (x.nuisance[k] - nuisances[k].min < bound_tolerance || nuisances[k].max - x.nuisance[k] < bound_tolerance)
-            return true;
-        return false;
-      }();
-  if (result.at_bound) result.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
 
-  ViscosityObservation at_estimate = obs;
-  at_estimate.plasma_viscosity = result.plasma_viscosity;
-  for (int k = 0; k < n_nuisances; ++k) at_estimate.nuisance.push_back(x.nuisance[k]);
-  for (std::size_t i = 0; i < sample.points.size(); ++i) {
-    FittedPoint f;
-    f.point = sample.points[i];
-    f.used = used[i];
-    f.capillary_number = at_estimate.capillary_number_at(f.point, result.shear_modulus);
-    const auto p = at_estimate.predict(f.point, result.shear_modulus, result.lambda);
-    f.predicted_eta_re = p.eta_re;
-    f.predicted_sd = p.sd;
-    f.weighted_residual = residuals[i](x);
-    if (!f.used) {
-      std::ostringstream why;
-      why << "outside the model's range (phi " << f.point.phi << ", Ca " << f.capillary_number << ", lambda "
-          << result.lambda << ")";
-      f.reason = why.str();
+  void read_estimate() {
+    result_.estimate.resize(static_cast<Eigen::Index>(result_.parameter_names.size()));
+    result_.estimate(0) = x_.ln_shear_modulus;
+    if (options_.setup.fit_lambda) result_.estimate(1) = x_.ln_lambda;
+    if (fit_eta0_) result_.estimate(result_.index_of("ln_eta0")) = x_.ln_plasma_viscosity;
+    for (int k = 0; k < n_nuisances_; ++k) result_.estimate(result_.index_of(nuisances_[k].name)) = x_.nuisance[k];
+    result_.shear_modulus = std::exp(x_.ln_shear_modulus);
+    result_.lambda = std::exp(x_.ln_lambda);
+    result_.plasma_viscosity = std::exp(x_.ln_plasma_viscosity);
+  }
+
+  // An edge fit that ends on the edge is a limit, not an estimate, and says which.
+  void diagnose_edge_fit() {
+    if (!edge_fit_) return;
+    const bool low_edge = x_.ln_shear_modulus - edge_.first < kBoundTolerance;
+    const bool high_edge = edge_.second - x_.ln_shear_modulus < kBoundTolerance;
+    if (!low_edge && !high_edge) return;
+    result_.model_edge = low_edge ? ModelEdge::largest_ca : ModelEdge::smallest_ca;
+    std::ostringstream what;
+    what << "no G_s fits the data inside the model's Ca range " << range_.ca_min << " to " << range_.ca_max
+         << ": the best fit carries every point out of it, so G_s is held where the "
+         << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range_.ca_max : range_.ca_min)
+         << "; read G_s = " << std::exp(x_.ln_shear_modulus) * kMicro << " uN/m as an "
+         << limit_kind(result_.model_edge) << " limit, not an estimate (the data lie "
+         << (low_edge ? "below" : "above") << " the model)";
+    result_.model_edge_reason = what.str();
+    result_.messages.push_back(result_.model_edge_reason);
+  }
+
+  void diagnose_bounds() {
+    auto near = [](double a, double b) { return a - b < kBoundTolerance; };
+    bool at_bound = near(x_.ln_shear_modulus, lo_) || near(hi_, x_.ln_shear_modulus);
+    if (options_.setup.fit_lambda)
+      at_bound = at_bound || near(x_.ln_lambda, ln_lambda_lo_) || near(ln_lambda_hi_, x_.ln_lambda);
+    for (int k = 0; k < n_nuisances_; ++k)
+      at_bound = at_bound || near(x_.nuisance[k], nuisances_[k].min) || near(nuisances_[k].max, x_.nuisance[k]);
+    result_.at_bound = at_bound;
+    if (at_bound) result_.messages.push_back("an estimate sits on its bound: the Laplace interval is unreliable");
+  }
+
+  // Every point at the estimate, used or left out and why; chi^2 of the used ones (of the
+  // joint likelihood's whitened residuals without a robust loss) and its degrees of freedom.
+  void fitted_points() {
+    ViscosityObservation at_estimate = obs_;
+    at_estimate.plasma_viscosity = result_.plasma_viscosity;
+    for (int k = 0; k < n_nuisances_; ++k) at_estimate.nuisance.push_back(x_.nuisance[k]);
+    for (std::size_t i = 0; i < sample_.points.size(); ++i) {
+      FittedPoint f;
+      f.point = sample_.points[i];
+      f.used = used_[i];
+      f.capillary_number = at_estimate.capillary_number_at(f.point, result_.shear_modulus);
+      const auto p = at_estimate.predict(f.point, result_.shear_modulus, result_.lambda);
+      f.predicted_eta_re = p.eta_re;
+      f.predicted_sd = p.sd;
+      f.weighted_residual = residuals_[i](x_);
+      if (!f.used) {
+        std::ostringstream why;
+        why << "outside the model's range (phi " << f.point.phi << ", Ca " << f.capillary_number << ", lambda "
+            << result_.lambda << ")";
+        f.reason = why.str();
+      } else {
+        result_.chi_square += f.weighted_residual * f.weighted_residual;
+        ++result_.degrees_of_freedom;
+      }
+      result_.points.push_back(f);
+    }
+    if (options_.loss == RobustLoss::none) {
+      const std::vector<double*> b = blocks();
+      const WhitenedResiduals w =
+          JointResidualBlock{obs_, used_subset(sample_.points, used_), fit_eta0_, n_nuisances_}.at(b.data());
+      if (w.ok) result_.chi_square = w.whitened.squaredNorm();
+    }
+    result_.degrees_of_freedom -= fitted_to_data_;
+    const int skipped = static_cast<int>(std::count(used_.begin(), used_.end(), false));
+    if (skipped > 0)
+      result_.messages.push_back(std::to_string(skipped) + " point(s) outside the model's range were not fitted");
+  }
+
+  // Laplace intervals (optionally scaled by the reduced chi^2), nuisances' clipped to their range.
+  void intervals() {
+    if (options_.scale_covariance_by_reduced_chi_square && result_.degrees_of_freedom > 0)
+      result_.covariance *= result_.chi_square / result_.degrees_of_freedom;
+    const double z = boost::math::quantile(boost::math::normal(), 0.5 * (1.0 + options_.interval_level));
+    const double level = options_.interval_level;
+    result_.ln_shear_modulus_sd = std::sqrt(result_.covariance(0, 0));
+    result_.shear_modulus_interval = {std::exp(x_.ln_shear_modulus - z * result_.ln_shear_modulus_sd),
+                                      std::exp(x_.ln_shear_modulus + z * result_.ln_shear_modulus_sd), level};
+    if (options_.setup.fit_lambda) {
+      const double sd = std::sqrt(result_.covariance(1, 1));
+      result_.lambda_interval = {std::exp(x_.ln_lambda - z * sd), std::exp(x_.ln_lambda + z * sd), level};
     } else {
-      result.chi_square += f.weighted_residual * f.weighted_residual;
-      ++result.degrees_of_freedom;
+      result_.lambda_interval = {result_.lambda, result_.lambda, level};
     }
-    result.points.push_back(f);
+    for (int k = 0; k < n_nuisances_; ++k) {
+      const int i = result_.index_of(nuisances_[k].name);
+      const double sd = std::sqrt(result_.covariance(i, i));
+      result_.nuisances.push_back({nuisances_[k], x_.nuisance[k],
+                                   {std::max(nuisances_[k].min, x_.nuisance[k] - z * sd),
+                                    std::min(nuisances_[k].max, x_.nuisance[k] + z * sd), level}});
+    }
   }
-  if (options.loss == RobustLoss::none) {  // chi^2 of the joint likelihood: the whitened residuals
-    const WhitenedResiduals w =
-        JointResidualBlock{obs, used_subset(sample.points, used), fit_eta0, n_nuisances}.at(blocks.data());
-    if (w.ok) result.chi_square = w.whitened.squaredNorm();
-  }
-  result.degrees_of_freedom -= fitted_to_data;
-  const int skipped = static_cast<int>(std::count(used.begin(), used.end(), false));
-  if (skipped > 0)
-    result.messages.push_back(std::to_string(skipped) + " point(s) outside the model's range were not fitted");
 
-  if (options.scale_covariance_by_reduced_chi_square && result.degrees_of_freedom > 0)
-    result.covariance *= result.chi_square / result.degrees_of_freedom;
-  const double z = boost::math::quantile(boost::math::normal(), 0.5 * (1.0 + options.interval_level));
-  result.ln_shear_modulus_sd = std::sqrt(result.covariance(0, 0));
-  result.shear_modulus_interval = {std::exp(x.ln_shear_modulus - z * result.ln_shear_modulus_sd),
-                                   std::exp(x.ln_shear_modulus + z * result.ln_shear_modulus_sd),
-                                   options.interval_level};
-  if (options.setup.fit_lambda) {
-    const double sd = std::sqrt(result.covariance(1, 1));
-    result.lambda_interval = {std::exp(x.ln_lambda - z * sd), std::exp(x.ln_lambda + z * sd), options.interval_level};
-  } else {
-    result.lambda_interval = {result.lambda, result.lambda, options.interval_level};
-  }
-  for (int k = 0; k < n_nuisances; ++k) {
-    const int i = result.index_of(nuisances[k].name);
-    const double sd = std::sqrt(result.covariance(i, i));
-    result.nuisances.push_back({nuisances[k], x.nuisance[k],
-                                {std::max(nuisances[k].min, x.nuisance[k] - z * sd),
-                                 std::min(nuisances[k].max, x.nuisance[k] + z * sd), options.interval_level}});
-  }
-  return result;
+  const SampleData& sample_;
+  const DirectFitOptions& options_;
+  const ViscosityObservation obs_;
+  const surrogate::ParameterRange range_;
+  const bool fit_eta0_;
+  const std::vector<surrogate::ModelNuisance> nuisances_;
+  int n_nuisances_ = 0;
+  int fitted_to_data_ = 1;
+  FitParameters x_;
+  double ln_lambda_lo_ = 0.0, ln_lambda_hi_ = 0.0;
+  double ln_gs_lo_ = 0.0, ln_gs_hi_ = 0.0;
+  std::vector<WeightedResidual> residuals_;
+  std::vector<bool> used_, first_set_;  // the points fitted; the first round's set
+  bool edge_fit_ = false;
+  double lo_ = 0.0, hi_ = 0.0;  // ln G_s bounds of the last solve
+  std::pair<double, double> edge_;
+  DirectFitResult result_;
+};
+
+}  // namespace
+
+DirectFitResult fit_direct(const SampleData& sample, const surrogate::ViscosityModel& model,
+                           const DirectFitOptions& options) {
+  return DirectFit(sample, model, options).run();
 }
 
 }  // namespace rbcal::calibration
