@@ -20,7 +20,7 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
 JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const std::vector<double>& nuisance,
                                double cell_radius, const std::vector<SampleTerms>& samples,
                                double relative_discrepancy) {
-  std::vector<surrogate::ViscosityQuery> queries;
+  std::vector<surrogate::ParameterPoint> queries;
   for (const SampleTerms& s : samples)
     for (const auto& point : *s.points)
       queries.push_back(

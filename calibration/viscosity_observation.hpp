@@ -61,7 +61,7 @@ struct ViscosityObservation {
   // predict at every point (batched by the model).
   std::vector<surrogate::ViscosityPrediction> predict_many(const std::vector<RelativeViscosityPoint>& points,
                                                            double shear_modulus, double lambda) const {
-    std::vector<surrogate::ViscosityQuery> queries;
+    std::vector<surrogate::ParameterPoint> queries;
     queries.reserve(points.size());
     for (const auto& point : points) queries.push_back({point.phi, capillary_number_at(point, shear_modulus), lambda});
     return model->predict_many_with(queries, nuisance);

@@ -72,7 +72,7 @@ void run_propose(const ProposeOptions& o) {
               << s.training_cases().size() << " cases, the library now has " << lib.cases.size()
               << " (rebuild with `rbcal surrogate build`)\n";
   const surrogate::ParameterGrid grid = candidate_grid(o, lib);
-  std::vector<surrogate::NominalPoint> simulated;
+  std::vector<surrogate::ParameterPoint> simulated;
   for (const auto& c : lib.cases) simulated.push_back({c.phi, c.capillary_number, c.viscosity_ratio});
   const std::vector<surrogate::ProposedCase> proposals = surrogate::propose_cases(s, grid, o.count, simulated);
   std::printf("rbcal library propose: %zu of %zu candidates (%s), surrogate %s\n", proposals.size(), grid.size(),

@@ -55,7 +55,7 @@ ParameterGrid listed_points(const FieldReader& r) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     const std::string field = "points." + std::to_string(i);
     if (!a[i].is_array() || a[i].size() != 3) r.fail(field, "must be [phi, Ca, lambda]");
-    const PlanPoint p{bounded(r, field, a[i][0], kPhiBounds, "phi"), bounded(r, field, a[i][1], kCapillaryNumberBounds, "Ca"),
+    const ParameterPoint p{bounded(r, field, a[i][0], kPhiBounds, "phi"), bounded(r, field, a[i][1], kCapillaryNumberBounds, "Ca"),
                       bounded(r, field, a[i][2], kViscosityRatioBounds, "lambda")};
     if (!seen.insert({p.phi, p.capillary_number, p.viscosity_ratio}).second) r.fail(field, "appears twice");
     g.listed.push_back(p);
@@ -71,9 +71,9 @@ ParameterGrid listed_points(const FieldReader& r) {
 
 }  // namespace
 
-std::vector<PlanPoint> ParameterGrid::points() const {
+std::vector<ParameterPoint> ParameterGrid::points() const {
   if (is_listed()) return listed;
-  std::vector<PlanPoint> out;
+  std::vector<ParameterPoint> out;
   for (double lambda : viscosity_ratio)
     for (double ca : capillary_number)
       for (double p : phi) out.push_back({p, ca, lambda});

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "formats/parameter_point.hpp"
+
 namespace rbcal::formats {
 
 struct AxisBounds {
@@ -20,23 +22,19 @@ inline constexpr AxisBounds kPhiBounds{1e-4, 0.7};               // volume fract
 inline constexpr AxisBounds kCapillaryNumberBounds{1e-6, 1e3};   // Ca
 inline constexpr AxisBounds kViscosityRatioBounds{1e-3, 1e3};    // lambda
 
-struct PlanPoint {
-  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
-};
-
 struct ParameterGrid {
   std::vector<double> phi;               // volume fractions
   std::vector<double> capillary_number;  // Ca
   std::vector<double> viscosity_ratio;   // lambda
   // A listed design ("points"): its points, in the file's order; the axes above then hold
   // the distinct values that occur. Empty for a grid.
-  std::vector<PlanPoint> listed;
+  std::vector<ParameterPoint> listed;
   bool is_listed() const { return !listed.empty(); }
   std::size_t size() const {
     return is_listed() ? listed.size() : phi.size() * capillary_number.size() * viscosity_ratio.size();
   }
   // The plan's points: the listed ones, or the grid lambda-major, then Ca, then phi.
-  std::vector<PlanPoint> points() const;
+  std::vector<ParameterPoint> points() const;
 };
 
 // Checks the top level (an object of schema "rbcal.plan/1") and the grid; FormatError

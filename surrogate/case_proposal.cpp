@@ -6,10 +6,10 @@
 namespace rbcal::surrogate {
 
 std::vector<ProposedCase> propose_cases(const ViscositySurrogate& surrogate, const ParameterGrid& candidates,
-                                        std::size_t k, const std::vector<NominalPoint>& simulated) {
+                                        std::size_t k, const std::vector<ParameterPoint>& simulated) {
   auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); };
   auto already_simulated = [&](double phi, double ca, double lambda) {
-    for (const NominalPoint& s : simulated)
+    for (const ParameterPoint& s : simulated)
       if (same(s.phi, phi) && same(s.capillary_number, ca) && same(s.viscosity_ratio, lambda)) return true;
     return false;
   };
@@ -18,7 +18,7 @@ std::vector<ProposedCase> propose_cases(const ViscositySurrogate& surrogate, con
     for (double ca : candidates.capillary_number)
       for (double lambda : candidates.viscosity_ratio) {
         if (already_simulated(phi, ca, lambda)) continue;
-        ProposedCase p{phi, ca, lambda};
+        ProposedCase p{{phi, ca, lambda}};
         p.eta_re = surrogate.predict(phi, ca, lambda).eta_re;
         p.relative_sd = surrogate.log_viscosity_sd(phi, ca, lambda);
         p.inside_hull = surrogate.inside_hull(phi, ca, lambda);

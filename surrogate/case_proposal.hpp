@@ -11,18 +11,13 @@
 
 namespace rbcal::surrogate {
 
-struct ProposedCase {
-  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
+struct ProposedCase : ParameterPoint {
   double eta_re = 0.0;       // current prediction there
   double relative_sd = 0.0;  // sd(ln eta_re) there before any of the proposed cases is added
   double relative_sd_when_chosen = 0.0;  // after the earlier proposals were added
   bool inside_hull = true;
 };
 
-// A point of the library by its planned (nominal) parameters.
-struct NominalPoint {
-  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
-};
 
 // The k grid points (of all phi x Ca x lambda combinations of `candidates`) with the
 // largest variance, in the order chosen. Fewer if the grid has fewer points. Candidates
@@ -30,6 +25,6 @@ struct NominalPoint {
 // the actual phi of each case, so a planned phi keeps some variance even where it was
 // simulated, and would otherwise be proposed again.
 std::vector<ProposedCase> propose_cases(const ViscositySurrogate& surrogate, const ParameterGrid& candidates,
-                                        std::size_t k, const std::vector<NominalPoint>& simulated = {});
+                                        std::size_t k, const std::vector<ParameterPoint>& simulated = {});
 
 }  // namespace rbcal::surrogate

@@ -42,17 +42,17 @@ ViscosityPrediction FixedNuisanceModel::predict_with(double phi, double capillar
   return base_.predict_with(phi, capillary_number, viscosity_ratio, all_values(values));
 }
 
-JointViscosityPrediction FixedNuisanceModel::predict_joint(const std::vector<ViscosityQuery>& queries,
+JointViscosityPrediction FixedNuisanceModel::predict_joint(const std::vector<ParameterPoint>& queries,
                                                            const std::vector<double>& values,
                                                            CovarianceForm form) const {
   return base_.predict_joint(queries, all_values(values), form);
 }
 
-std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many(const std::vector<ViscosityQuery>& queries) const {
+std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many(const std::vector<ParameterPoint>& queries) const {
   return base_.predict_many_with(queries, all_values({}));
 }
 
-std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many_with(const std::vector<ViscosityQuery>& queries,
+std::vector<ViscosityPrediction> FixedNuisanceModel::predict_many_with(const std::vector<ParameterPoint>& queries,
                                                                        const std::vector<double>& values) const {
   return base_.predict_many_with(queries, all_values(values));
 }

@@ -20,11 +20,11 @@ class FixedNuisanceModel : public ViscosityModel {
   std::vector<ModelNuisance> nuisances() const override { return free_; }
   ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                    const std::vector<double>& values) const override;
-  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
                                          const std::vector<double>& values,
                                          CovarianceForm form = CovarianceForm::automatic) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
-  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
+  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
                                                      const std::vector<double>& values) const override;
 
  private:

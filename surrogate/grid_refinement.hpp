@@ -5,7 +5,7 @@
 namespace rbcal::surrogate {
 
 using formats::ParameterGrid;
-using formats::PlanPoint;
+using formats::ParameterPoint;
 
 // The grid with the midpoint inserted between neighbouring values of each axis (phi
 // linearly, Ca and lambda geometrically); axes are sorted and de-duplicated first.

@@ -66,7 +66,7 @@ LibrarySummary summarise(const SimulationLibrary& library) {
   const ParameterGrid grid = s.grid_from_plan ? *library.plan : ParameterGrid{phis, cas, lambdas};
   s.grid = {unique_sorted(grid.phi), unique_sorted(grid.capillary_number), unique_sorted(grid.viscosity_ratio)};
   // Grid points phi-major, lambda fastest (the order the tables read); a listed design's in its order.
-  std::vector<PlanPoint> points;
+  std::vector<ParameterPoint> points;
   const std::size_t spanned = s.grid.phi.size() * s.grid.capillary_number.size() * s.grid.viscosity_ratio.size();
   if (s.listed_design) {
     points = library.plan->listed;
@@ -81,8 +81,8 @@ LibrarySummary summarise(const SimulationLibrary& library) {
         for (double lambda : s.grid.viscosity_ratio) points.push_back({phi, ca, lambda});
   }
   std::vector<bool> matched(library.cases.size(), false);
-  for (const PlanPoint& point : points) {
-    GridPoint p{point.phi, point.capillary_number, point.viscosity_ratio, false};
+  for (const ParameterPoint& point : points) {
+    GridPoint p{point, false};
     for (std::size_t i = 0; i < library.cases.size(); ++i) {
       const LibraryCase& c = library.cases[i];
       if (close(c.phi, p.phi) && close(c.capillary_number, p.capillary_number) &&

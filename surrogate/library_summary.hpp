@@ -10,8 +10,7 @@
 
 namespace rbcal::surrogate {
 
-struct GridPoint {
-  double phi = 0.0, capillary_number = 0.0, viscosity_ratio = 0.0;
+struct GridPoint : ParameterPoint {
   bool present = false;  // a finished case has these nominal parameters
   double eta_re = 0.0;   // its result, when present
 };

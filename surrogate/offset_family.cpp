@@ -112,11 +112,11 @@ ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary
   return boxed(predict_at_offset(phi, capillary_number, viscosity_ratio, values[0])).prediction;
 }
 
-std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many(const std::vector<ViscosityQuery>& queries) const {
+std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many(const std::vector<ParameterPoint>& queries) const {
   return predict_many_with(queries, {offset_.mean});
 }
 
-std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many_with(const std::vector<ViscosityQuery>& queries,
+std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many_with(const std::vector<ParameterPoint>& queries,
                                                                       const std::vector<double>& values) const {
   if (values.size() > 1u)
     throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
@@ -132,7 +132,7 @@ std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many_with(const std:
   return out;
 }
 
-JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ViscosityQuery>& queries,
+JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ParameterPoint>& queries,
                                                           const std::vector<double>& values,
                                                           CovarianceForm form) const {
   const double offset = values.empty() ? offset_.mean : values.at(0);

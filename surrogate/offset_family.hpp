@@ -61,11 +61,11 @@ class OffsetFamilyModel final : public ViscosityModel {
   // values: c (beta is at its mean: see above).
   ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
                                    const std::vector<double>& values) const override;
-  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
                                          const std::vector<double>& values,
                                          CovarianceForm form = CovarianceForm::automatic) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
-  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
+  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
                                                      const std::vector<double>& values) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }

@@ -58,7 +58,7 @@ TrendCheck check_trends(const ViscosityModel& model) {
       for (std::size_t i = 0; i + 1 < t.phi.size(); ++i) {
         ++t.phi_steps;
         const double a = eta(t.phi[i], ca, lambda), b = eta(t.phi[i + 1], ca, lambda);
-        if (!(b > a)) t.not_rising_with_phi.push_back({t.phi[i], ca, lambda, a, b});
+        if (!(b > a)) t.not_rising_with_phi.push_back({{t.phi[i], ca, lambda}, a, b});
       }
   for (double lambda : t.viscosity_ratio)
     for (double phi : t.phi) {
@@ -67,7 +67,7 @@ TrendCheck check_trends(const ViscosityModel& model) {
         ++t.ca_steps;
         const ViscosityPrediction here = model.predict(phi, t.capillary_number[i], lambda);
         const double b = eta(phi, t.capillary_number[i + 1], lambda);
-        if (!(b < here.eta_re)) t.not_falling_with_ca.push_back({phi, t.capillary_number[i], lambda, here.eta_re, b, here.sd});
+        if (!(b < here.eta_re)) t.not_falling_with_ca.push_back({{phi, t.capillary_number[i], lambda}, here.eta_re, b, here.sd});
       }
     }
   t.high_shear_phi = std::clamp(0.41, r.phi_min, r.phi_max);

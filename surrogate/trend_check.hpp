@@ -19,8 +19,7 @@ namespace rbcal::surrogate {
 
 double pries_1992_relative_viscosity(double hematocrit);
 
-struct TrendViolation {
-  double phi, capillary_number, viscosity_ratio;  // the lower end of the failing step
+struct TrendViolation : ParameterPoint {  // the lower end of the failing step
   double eta_re_here, eta_re_next;                // at this point and the next along the trend's axis
   double sd_here = 0.0;                           // the model's predictive sd of eta_re at this point
   // The step against the trend in units of that sd (0 where the model gives no sd).

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "formats/parameter_point.hpp"
 #include "surrogate/joint_covariance.hpp"
 
 namespace rbcal::surrogate {
@@ -37,10 +38,8 @@ struct ParameterRange {
   }
 };
 
-// One point at which the model is asked: (phi, Ca, lambda).
-struct ViscosityQuery {
-  double phi = 0.0, capillary_number = 1.0, viscosity_ratio = 1.0;
-};
+// A point at which the model is asked: (phi, Ca, lambda).
+using formats::ParameterPoint;
 
 // The model at several points at once: each point's prediction, and the joint covariance of the
 // predicted eta_re (model uncertainty only; its diagonal is each point's sd^2).
@@ -74,10 +73,10 @@ class ViscosityModel {
   virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
   virtual ParameterRange range() const = 0;
   // predict at each query (a model may batch them: the same numbers, faster).
-  virtual std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const {
+  virtual std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const {
     std::vector<ViscosityPrediction> out;
     out.reserve(queries.size());
-    for (const ViscosityQuery& q : queries) out.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
+    for (const ParameterPoint& q : queries) out.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
     return out;
   }
 
@@ -89,12 +88,12 @@ class ViscosityModel {
     return predict(phi, capillary_number, viscosity_ratio);
   }
   // predict_with at each query (empty values: predict_many); a model may batch them.
-  virtual std::vector<ViscosityPrediction> predict_many_with(const std::vector<ViscosityQuery>& queries,
+  virtual std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
                                                              const std::vector<double>& nuisance_values) const {
     if (nuisance_values.empty()) return predict_many(queries);
     std::vector<ViscosityPrediction> out;
     out.reserve(queries.size());
-    for (const ViscosityQuery& q : queries)
+    for (const ParameterPoint& q : queries)
       out.push_back(predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
     return out;
   }
@@ -104,14 +103,14 @@ class ViscosityModel {
   // independent: the same runs inform both, and a systematic error common to every run moves all
   // points together. A likelihood that treats them as independent lets them average away over a
   // sample's points. This default knows no correlation: the covariance is diagonal.
-  virtual JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+  virtual JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
                                                  const std::vector<double>& nuisance_values,
                                                  CovarianceForm /*form*/ = CovarianceForm::automatic) const {
     JointViscosityPrediction out;
     const auto n = static_cast<Eigen::Index>(queries.size());
     Eigen::VectorXd variances(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-      const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+      const ParameterPoint& q = queries[static_cast<std::size_t>(i)];
       out.points.push_back(nuisance_values.empty()
                                ? predict(q.phi, q.capillary_number, q.viscosity_ratio)
                                : predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));

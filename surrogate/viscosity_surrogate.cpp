@@ -162,12 +162,12 @@ ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_num
   return prediction_from(p.mean, p.variance, p.mean_gradient, phi, capillary_number, viscosity_ratio);
 }
 
-std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vector<ViscosityQuery>& queries,
+std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vector<ParameterPoint>& queries,
                                                                  LatentCovariance form, JointCovariance* covariance) const {
   const auto n = static_cast<Eigen::Index>(queries.size());
   Eigen::MatrixXd x_rows(n, 3), h_rows(n, 1 + terms_.ca + terms_.lambda);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+    const ParameterPoint& q = queries[static_cast<std::size_t>(i)];
     const Eigen::VectorXd x = input(q.phi, q.capillary_number, q.viscosity_ratio);
     x_rows.row(i) = x.transpose();
     h_rows.row(i) = basis(x).transpose();
@@ -177,7 +177,7 @@ std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vec
   std::vector<ViscosityPrediction> out;
   out.reserve(queries.size());
   for (Eigen::Index i = 0; i < n; ++i) {
-    const ViscosityQuery& q = queries[static_cast<std::size_t>(i)];
+    const ParameterPoint& q = queries[static_cast<std::size_t>(i)];
     const Eigen::VectorXd x = x_rows.row(i).transpose();
     const Eigen::VectorXd gradient =
         p.kernel_gradient.row(i).transpose() + basis_jacobian(x).transpose() * process_.mean_coefficients();
@@ -186,11 +186,11 @@ std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vec
   return out;
 }
 
-std::vector<ViscosityPrediction> ViscositySurrogate::predict_many(const std::vector<ViscosityQuery>& queries) const {
+std::vector<ViscosityPrediction> ViscositySurrogate::predict_many(const std::vector<ParameterPoint>& queries) const {
   return predict_rows(queries, LatentCovariance::none, nullptr);
 }
 
-JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ViscosityQuery>& queries,
+JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ParameterPoint>& queries,
                                                           const std::vector<double>& /*nuisance_values*/,
                                                           CovarianceForm form) const {
   const bool exact = form == CovarianceForm::exact ||

@@ -58,11 +58,11 @@ class ViscositySurrogate final : public ViscosityModel {
                      double predictive_sd_scale = 1.0);
 
   ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ViscosityQuery>& queries) const override;
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
   ParameterRange range() const override { return range_; }
   // Covariance from the process's joint latent covariance of ln eta_re, carried to eta_re by the
   // delta method as predict's sd is: cov(eta_i, eta_j) = eta_i eta_j cov(y_i, y_j).
-  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& queries,
+  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
                                          const std::vector<double>& nuisance_values,
                                          CovarianceForm form = CovarianceForm::automatic) const override;
 
@@ -107,7 +107,7 @@ class ViscositySurrogate final : public ViscosityModel {
   ViscosityPrediction prediction_from(double mean, double variance, const Eigen::VectorXd& mean_gradient, double phi,
                                       double capillary_number, double viscosity_ratio) const;
   // predict_many, and the process's joint covariance of ln eta_re in the form asked.
-  std::vector<ViscosityPrediction> predict_rows(const std::vector<ViscosityQuery>& queries, LatentCovariance form,
+  std::vector<ViscosityPrediction> predict_rows(const std::vector<ParameterPoint>& queries, LatentCovariance form,
                                                 JointCovariance* covariance) const;
 
   std::vector<TrainingCase> cases_;

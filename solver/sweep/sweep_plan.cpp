@@ -61,7 +61,7 @@ SweepPlan sweep_plan_from_json(const nlohmann::json& j, const std::string& path)
   // 0: every case keeps the base Reynolds number.
   const double max_modulus =
       r.find("max_shear_modulus_lattice") ? r.positive("max_shear_modulus_lattice") : 0.0;
-  for (const formats::PlanPoint& point : grid.points()) {
+  for (const formats::ParameterPoint& point : grid.points()) {
     const double phi = point.phi, ca = point.capillary_number, lambda = point.viscosity_ratio;
     nlohmann::json c = base;
     c["params"]["phi"] = phi;

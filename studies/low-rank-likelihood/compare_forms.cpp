@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   int per = argc > 1 ? std::atoi(argv[1]) : 60;
   std::mt19937_64 rng(3); std::normal_distribution<double> nd;
   for (double gs : {0.5e-6, 1.3e-6, 4e-6}) for (double c : {0.6, 0.95}) {
-    std::vector<ViscosityQuery> q;
+    std::vector<ParameterPoint> q;
     for (double phi : {0.25, 0.35, 0.45, 0.55}) for (int i = 0; i < per; ++i) {
       double gd = std::pow(10.0, 1.6 + 1.5 * i / (per - 1.0));
       q.push_back({phi, 1.2e-3 * gd * 3.91e-6 / gs, 5.0});

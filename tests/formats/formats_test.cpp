@@ -134,7 +134,7 @@ TEST(PlanGrid, ListedPointsKeepTheirOrderAndObeyTheBounds) {
   const ParameterGrid g = plan_grid_from_json(listed, "p.json");
   ASSERT_TRUE(g.is_listed());
   EXPECT_EQ(g.size(), 3u);
-  const std::vector<PlanPoint> points = g.points();
+  const std::vector<ParameterPoint> points = g.points();
   EXPECT_EQ(points[0].phi, 0.55);
   EXPECT_EQ(points[1].capillary_number, 0.01);
   EXPECT_EQ(points[2].viscosity_ratio, 5.0);
@@ -155,7 +155,7 @@ TEST(PlanGrid, ListedPointsKeepTheirOrderAndObeyTheBounds) {
             "p.json: field points: a plan has a grid or points, not both");
   // A grid's points: lambda-major, then Ca, then phi (the sweep's case order).
   const json grid = {{"schema", kPlanSchema}, {"grid", {{"phi", {0.1, 0.2}}, {"Ca", {0.1, 1}}, {"lambda", {1, 5}}}}};
-  const std::vector<PlanPoint> order = plan_grid_from_json(grid, "p.json").points();
+  const std::vector<ParameterPoint> order = plan_grid_from_json(grid, "p.json").points();
   ASSERT_EQ(order.size(), 8u);
   EXPECT_EQ(order[1].phi, 0.2);
   EXPECT_EQ(order[2].capillary_number, 1.0);

@@ -51,7 +51,7 @@ class CorrelatedMember final : public ViscosityModel {
     p.sd = 0.02 * p.eta_re * (1.0 + offset_);
     return p;
   }
-  JointViscosityPrediction predict_joint(const std::vector<ViscosityQuery>& q, const std::vector<double>& /*nuisance*/,
+  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& q, const std::vector<double>& /*nuisance*/,
                                          CovarianceForm /*form*/ = CovarianceForm::automatic) const override {
     JointViscosityPrediction out;
     const auto n = static_cast<Eigen::Index>(q.size());
@@ -163,7 +163,7 @@ TEST(OffsetFamily, BatchedPredictionsArePointByPointOnes) {
   std::vector<OffsetFamilyMember> members;
   for (double c : {0.45, 0.6, 0.75, 0.9, 1.05}) members.push_back({c, std::make_shared<KnownMember>(c, curved)});
   const OffsetFamilyModel f(members, 0.75, 0.15, BoxCorrectionPrior{0.1, 0.07});
-  const std::vector<ViscosityQuery> q = {{0.1, 0.1, 5.0}, {0.25, 0.5, 2.0}, {0.45, 2.0, 8.0}};
+  const std::vector<ParameterPoint> q = {{0.1, 0.1, 5.0}, {0.25, 0.5, 2.0}, {0.45, 2.0, 8.0}};
   for (double c : {0.5, 0.75, 0.97}) {
     const std::vector<ViscosityPrediction> many = f.predict_many_with(q, {c});
     ASSERT_EQ(many.size(), q.size());
@@ -190,7 +190,7 @@ TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryP
     known.push_back(std::make_shared<CorrelatedMember>(c));
     members.push_back({c, known.back()});
   }
-  const std::vector<ViscosityQuery> q = {{0.1, 0.1, 5.0}, {0.2, 0.5, 5.0}, {0.4, 2.0, 5.0}};
+  const std::vector<ParameterPoint> q = {{0.1, 0.1, 5.0}, {0.2, 0.5, 5.0}, {0.4, 2.0, 5.0}};
   const OffsetFamilyModel plain(members, 0.75, 0.15);
   const BoxCorrectionPrior box{0.1, 0.07};
   const OffsetFamilyModel boxed(members, 0.75, 0.15, box);
@@ -336,7 +336,7 @@ TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
   EXPECT_TRUE(held.nuisances().empty());
   EXPECT_EQ(held.predict(0.3, 0.5, 5.0).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
   EXPECT_EQ(held.predict_with(0.3, 0.5, 5.0, {}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
-  const std::vector<ViscosityQuery> q = {{0.2, 0.5, 5.0}, {0.3, 0.5, 5.0}};
+  const std::vector<ParameterPoint> q = {{0.2, 0.5, 5.0}, {0.3, 0.5, 5.0}};
   const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {0.6});
   EXPECT_EQ(a.points[1].eta_re, b.points[1].eta_re);
   EXPECT_EQ(a.covariance.dense()(0, 1), b.covariance.dense()(0, 1));

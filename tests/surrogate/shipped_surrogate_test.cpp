@@ -111,7 +111,7 @@ TEST(ShippedSurrogateFamily, LowRankLikelihoodIsTheExactOne) {
     return -0.5 * (llt.matrixL().solve(r).squaredNorm() + 2.0 * llt.matrixLLT().diagonal().array().log().sum());
   };
   const auto sample = [](int per_line) {
-    std::vector<ViscosityQuery> queries;
+    std::vector<ParameterPoint> queries;
     for (const double phi : {0.25, 0.35, 0.45, 0.55})
       for (int i = 0; i < per_line; ++i) {
         const double shear_rate = 40.0 * std::pow(25.0, i / (per_line - 1.0));
@@ -120,7 +120,7 @@ TEST(ShippedSurrogateFamily, LowRankLikelihoodIsTheExactOne) {
     return queries;
   };
   for (const double offset : {0.75, 0.62}) {
-    const std::vector<ViscosityQuery> queries = sample(75);
+    const std::vector<ParameterPoint> queries = sample(75);
     const JointViscosityPrediction exact = family.predict_joint(queries, {offset}, CovarianceForm::exact);
     const JointViscosityPrediction low = family.predict_joint(queries, {offset}, CovarianceForm::low_rank);
     ASSERT_TRUE(exact.covariance.dense_is_cheaper());

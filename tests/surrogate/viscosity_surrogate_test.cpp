@@ -71,7 +71,7 @@ TEST(ViscositySurrogate, TakesAnotherSurrogatesHyperparameters) {
 
 TEST(ViscositySurrogate, JointPredictionCorrelatesNeighbours) {
   const ViscositySurrogate& s = fitted_surrogate();
-  const std::vector<ViscosityQuery> q = {{0.2, 0.1, 2.0}, {0.21, 0.11, 2.0}, {0.35, 0.7, 8.0}, {0.08, 0.02, 1.0}};
+  const std::vector<ParameterPoint> q = {{0.2, 0.1, 2.0}, {0.21, 0.11, 2.0}, {0.35, 0.7, 8.0}, {0.08, 0.02, 1.0}};
   const JointViscosityPrediction joint = s.predict_joint(q, {});
   const Eigen::MatrixXd covariance = joint.covariance.dense();
   for (std::size_t i = 0; i < q.size(); ++i) {
@@ -256,7 +256,7 @@ TEST(CaseProposal, NeverProposesAPointAlreadySimulated) {
   const std::vector<TrainingCase> cases = synthetic_training_cases(grid, 4);
   const ViscositySurrogate s = ViscositySurrogate::fit(cases);
   // Candidates: the library's own grid; all but one point count as simulated.
-  std::vector<NominalPoint> simulated;
+  std::vector<ParameterPoint> simulated;
   for (double phi : grid.phi)
     for (double ca : grid.ca)
       for (double lambda : grid.lambda)
