@@ -308,10 +308,7 @@ class DirectFit {
 
   void name_parameters() {
     result_.plasma_viscosity_fitted = fit_eta0_;
-    result_.parameter_names = {"ln_G_s"};
-    if (options_.setup.fit_lambda) result_.parameter_names.push_back("ln_lambda");
-    if (fit_eta0_) result_.parameter_names.push_back("ln_eta0");
-    for (const auto& n : nuisances_) result_.parameter_names.push_back(n.name);
+    result_.parameter_names = ParameterLayout(options_.setup.fit_lambda, false, fit_eta0_, nuisances_).names;
     // Parameters the data alone must fix: eta0, and lambda under its prior, have prior residuals.
     fitted_to_data_ = options_.setup.fit_lambda && options_.setup.lambda_prior_log_sd <= 0.0 ? 2 : 1;
   }

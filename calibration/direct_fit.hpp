@@ -15,6 +15,7 @@
 
 #include <Eigen/Dense>
 
+#include "calibration/parameter_layout.hpp"
 #include "calibration/calibration_input.hpp"
 #include "calibration/model_setup.hpp"
 #include "calibration/quantiles.hpp"
@@ -111,11 +112,7 @@ struct DirectFitResult {
   }
 
   // Index of a parameter in estimate and covariance, -1 when not fitted.
-  int index_of(const std::string& name) const {
-    for (std::size_t i = 0; i < parameter_names.size(); ++i)
-      if (parameter_names[i] == name) return static_cast<int>(i);
-    return -1;
-  }
+  int index_of(const std::string& name) const { return index_in(parameter_names, name); }
 };
 
 // Throws std::invalid_argument when fewer points than parameters lie in the model's range at the

@@ -19,31 +19,20 @@ LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma
   if (points_.empty()) throw std::invalid_argument("posterior needs at least one data point");
   if (!(options_.shear_modulus_min > 0.0 && options_.shear_modulus_max > options_.shear_modulus_min))
     throw std::invalid_argument("posterior: need 0 < shear_modulus_min < shear_modulus_max");
-  names_ = {"ln_G_s"};
   if (options_.setup.fit_lambda) {
     const surrogate::ParameterRange range = model.range();
     if (options_.lambda_min <= 0.0) options_.lambda_min = range.lambda_min;
     if (options_.lambda_max <= 0.0) options_.lambda_max = range.lambda_max;
     if (!(options_.lambda_min > 0.0 && options_.lambda_max > options_.lambda_min))
       throw std::invalid_argument("posterior: lambda prior range must satisfy 0 < min < max");
-    lambda_index_ = static_cast<int>(names_.size());
-    names_.push_back("ln_lambda");
-  }
-  if (options_.fit_discrepancy) {
-    discrepancy_index_ = static_cast<int>(names_.size());
-    names_.push_back("ln_sigma_d");
   }
   SampleData as_sample;
   as_sample.plasma.eta0 = plasma_viscosity;
   as_sample.plasma.standard_error = plasma_viscosity_standard_error;
   as_sample.points = points_;
-  if (options_.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(as_sample)) {
-    plasma_viscosity_index_ = static_cast<int>(names_.size());
-    names_.push_back("ln_eta0");
-  }
+  const bool eta0 = options_.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(as_sample);
   if (options_.model_nuisances_as_parameters) nuisances_ = model.nuisances();
-  if (!nuisances_.empty()) nuisance_index_ = static_cast<int>(names_.size());
-  for (const auto& n : nuisances_) names_.push_back(n.name);
+  layout_ = ParameterLayout(options_.setup.fit_lambda, options_.fit_discrepancy, eta0, nuisances_);
 }
 
 double lambda_log_prior(double x, const PosteriorOptions& options) {
@@ -74,7 +63,7 @@ double nuisance_log_prior(double v, const surrogate::ModelNuisance& n) {
 
 std::vector<double> LogPosterior::nuisance_values(const Eigen::VectorXd& theta) const {
   std::vector<double> values;
-  for (std::size_t k = 0; k < nuisances_.size(); ++k) values.push_back(theta(nuisance_index_ + static_cast<int>(k)));
+  for (std::size_t k = 0; k < nuisances_.size(); ++k) values.push_back(theta(layout_.nuisance + static_cast<int>(k)));
   return values;
 }
 
@@ -86,15 +75,15 @@ ViscosityObservation LogPosterior::observation_at(const Eigen::VectorXd& theta) 
 }
 
 double LogPosterior::plasma_viscosity(const Eigen::VectorXd& theta) const {
-  return plasma_viscosity_index_ >= 0 ? std::exp(theta(plasma_viscosity_index_)) : observation_.plasma_viscosity;
+  return layout_.plasma_viscosity >= 0 ? std::exp(theta(layout_.plasma_viscosity)) : observation_.plasma_viscosity;
 }
 
 double LogPosterior::lambda(const Eigen::VectorXd& theta) const {
-  return lambda_index_ >= 0 ? std::exp(theta(lambda_index_)) : options_.setup.lambda;
+  return layout_.lambda >= 0 ? std::exp(theta(layout_.lambda)) : options_.setup.lambda;
 }
 
 double LogPosterior::discrepancy(const Eigen::VectorXd& theta) const {
-  return discrepancy_index_ >= 0 ? std::exp(theta(discrepancy_index_)) : 0.0;
+  return layout_.discrepancy >= 0 ? std::exp(theta(layout_.discrepancy)) : 0.0;
 }
 
 double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
@@ -102,15 +91,15 @@ double LogPosterior::log_prior(const Eigen::VectorXd& theta) const {
   const double ln_lo = std::log(options_.shear_modulus_min), ln_hi = std::log(options_.shear_modulus_max);
   if (!(theta(0) >= ln_lo && theta(0) <= ln_hi)) return minus_infinity;
   double log_p = -std::log(ln_hi - ln_lo);
-  if (lambda_index_ >= 0) log_p += lambda_log_prior(theta(lambda_index_), options_);
-  if (discrepancy_index_ >= 0)
-    log_p += normal_log_prior(theta(discrepancy_index_), std::log(options_.discrepancy_prior_median),
+  if (layout_.lambda >= 0) log_p += lambda_log_prior(theta(layout_.lambda), options_);
+  if (layout_.discrepancy >= 0)
+    log_p += normal_log_prior(theta(layout_.discrepancy), std::log(options_.discrepancy_prior_median),
                               options_.discrepancy_prior_log_sd);
-  if (plasma_viscosity_index_ >= 0)
-    log_p += normal_log_prior(theta(plasma_viscosity_index_), std::log(observation_.plasma_viscosity),
+  if (layout_.plasma_viscosity >= 0)
+    log_p += normal_log_prior(theta(layout_.plasma_viscosity), std::log(observation_.plasma_viscosity),
                               plasma_viscosity_standard_error_ / observation_.plasma_viscosity);
   for (std::size_t k = 0; k < nuisances_.size(); ++k)
-    log_p += nuisance_log_prior(theta(nuisance_index_ + static_cast<int>(k)), nuisances_[k]);
+    log_p += nuisance_log_prior(theta(layout_.nuisance + static_cast<int>(k)), nuisances_[k]);
   return log_p;
 }
 
@@ -123,7 +112,7 @@ double LogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
     for (const auto& point : points_)
       if (!at.inside_range(point, shear_modulus, lambda_value)) return -std::numeric_limits<double>::infinity();
   return joint_log_likelihood(
-      joint_residuals(at, points_, shear_modulus, lambda_value, plasma_viscosity_index_ >= 0, sigma_d));
+      joint_residuals(at, points_, shear_modulus, lambda_value, layout_.plasma_viscosity >= 0, sigma_d));
 }
 
 double LogPosterior::operator()(const Eigen::VectorXd& theta) const {

@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 
+#include "calibration/parameter_layout.hpp"
 #include "calibration/calibration_input.hpp"
 #include "calibration/model_setup.hpp"
 #include "calibration/viscosity_observation.hpp"
@@ -68,13 +69,14 @@ class LogPosterior {
                std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options = {},
                double plasma_viscosity_standard_error = 0.0);
 
-  int dimension() const { return static_cast<int>(names_.size()); }
-  const std::vector<std::string>& parameter_names() const { return names_; }
-  int lambda_index() const { return lambda_index_; }            // -1 when lambda is fixed
-  int discrepancy_index() const { return discrepancy_index_; }  // -1 without sigma_d
-  int plasma_viscosity_index() const { return plasma_viscosity_index_; }  // -1 with eta0 fixed
+  int dimension() const { return layout_.dimension(); }
+  const std::vector<std::string>& parameter_names() const { return layout_.names; }
+  const ParameterLayout& layout() const { return layout_; }
+  int lambda_index() const { return layout_.lambda; }            // -1 when lambda is fixed
+  int discrepancy_index() const { return layout_.discrepancy; }  // -1 without sigma_d
+  int plasma_viscosity_index() const { return layout_.plasma_viscosity; }  // -1 with eta0 fixed
   // Index of the first model nuisance (they follow in the model's order), -1 without them.
-  int nuisance_index() const { return nuisance_index_; }
+  int nuisance_index() const { return layout_.nuisance; }
   const std::vector<surrogate::ModelNuisance>& nuisances() const { return nuisances_; }
 
   double lambda(const Eigen::VectorXd& theta) const;
@@ -96,11 +98,7 @@ class LogPosterior {
   ViscosityObservation observation_;
   std::vector<RelativeViscosityPoint> points_;
   PosteriorOptions options_;
-  std::vector<std::string> names_;
-  int lambda_index_ = -1;
-  int discrepancy_index_ = -1;
-  int plasma_viscosity_index_ = -1;
-  int nuisance_index_ = -1;
+  ParameterLayout layout_;
   std::vector<surrogate::ModelNuisance> nuisances_;
   double plasma_viscosity_standard_error_ = 0.0;
 };
