@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "bench/timing.hpp"
+#include "bench/detail/timing.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 
 namespace rbcal::bench {

@@ -3,8 +3,8 @@
 #include <omp.h>
 
 #include "bench/lattice_throughput.hpp"
-#include "bench/stream_triad.hpp"
-#include "bench/timing.hpp"
+#include "bench/detail/stream_triad.hpp"
+#include "bench/detail/timing.hpp"
 
 namespace rbcal::bench {
 

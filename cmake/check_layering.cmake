@@ -6,8 +6,9 @@
 #   bench        <- solver, calibration, surrogate, formats (benchmarks of each)
 #   cli          <- everything
 #   python       <- calibration, surrogate, formats  (the Python module: no solver)
-# and each module's detail/ folder is its own: no other module includes from it, and no public
-# header of the module itself does (a public header that did would hand it on). Tests may.
+# and each module's detail/ folders (at any depth: solver/simulation/detail/) are its own: no
+# other module includes from them, and no public header of the module itself does (a public
+# header that did would hand it on). Tests may.
 # Run as: cmake -DSOURCE_DIR=... -P check_layering.cmake; fails naming file and include.
 cmake_minimum_required(VERSION 3.22)
 set(allowed_formats formats rbcal)
@@ -28,7 +29,8 @@ foreach(module formats solver surrogate calibration bench cli python)
       if(NOT target IN_LIST allowed_${module})
         string(APPEND violations "\n  ${shown}: ${line} (${module}/ may include ${allowed_${module}})")
       endif()
-      if(line MATCHES "^#include \"[a-z_]+/detail/")
+      # detail/ at any depth of a module (solver/simulation/detail/...) is the module's own.
+      if(line MATCHES "^#include \"[a-z_]+/([a-z_]+/)*detail/")
         if(NOT target STREQUAL module)
           string(APPEND violations "\n  ${shown}: ${line} (another module's detail/)")
         elseif(shown MATCHES "\\.hpp$" AND NOT shown MATCHES "/detail/")

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """eta_re over a strain window of a finished run's series.csv, with the same blocking
-standard error as the solver (solver/simulation/block_average.hpp: Flyvbjerg & Petersen
+standard error as the solver (solver/simulation/detail/block_average.hpp: Flyvbjerg & Petersen
 1989, the largest level that keeps at least 8 blocks).
 
     python3 scripts/window_average.py RUN/series.csv START END [COLUMN] [--blocks WIDTH]

@@ -5,7 +5,7 @@
 #include <Eigen/QR>
 #include <stdexcept>
 
-#include "surrogate/hyperparameter_fit.hpp"
+#include "surrogate/detail/hyperparameter_fit.hpp"
 
 namespace rbcal::surrogate {
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "solver/device/device_kernels.hpp"
-#include "solver/device/device_runtime.hpp"
+#include "solver/device/detail/device_kernels.hpp"
+#include "solver/device/detail/device_runtime.hpp"
 #include "solver/fluid/d3q19.hpp"
 #include "solver/simulation/shear_flow_simulation.hpp"
 #include "solver/simulation/state_guards.hpp"

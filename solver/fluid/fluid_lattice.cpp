@@ -8,7 +8,7 @@
 
 #include "solver/fluid/d3q19.hpp"
 #include "solver/simd.hpp"
-#include "solver/fluid/trt_collision.hpp"
+#include "solver/fluid/detail/trt_collision.hpp"
 
 namespace rbcal::solver {
 

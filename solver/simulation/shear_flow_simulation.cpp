@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "solver/coupling/immersed_boundary.hpp"
-#include "solver/simulation/cell_seeding.hpp"
+#include "solver/simulation/detail/cell_seeding.hpp"
 #include "solver/simulation/checkpoint.hpp"
 #include "solver/simulation/state_guards.hpp"
 

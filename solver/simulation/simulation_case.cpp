@@ -10,7 +10,7 @@
 #include "formats/library_schema.hpp"
 #include "solver/lattice_units.hpp"
 #include "solver/simulation/cell_overlap.hpp"
-#include "solver/simulation/coupling_stability.hpp"
+#include "solver/simulation/detail/coupling_stability.hpp"
 
 namespace rbcal::solver {
 

@@ -12,9 +12,9 @@
 #include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 #include "formats/write_error.hpp"
-#include "solver/io/format_duration.hpp"
+#include "solver/io/detail/format_duration.hpp"
 #include "solver/simulation/case_runner.hpp"
-#include "solver/sweep/case_claim.hpp"
+#include "solver/sweep/detail/case_claim.hpp"
 
 namespace rbcal::solver {
 

@@ -14,7 +14,7 @@
 #include "solver/membrane/dihedral_bending.hpp"
 #include "solver/membrane/membrane_elasticity.hpp"
 #include "solver/membrane/volume_constraint.hpp"
-#include "solver/numerics/lbfgs.hpp"
+#include "solver/numerics/detail/lbfgs.hpp"
 
 using namespace rbcal::solver;
 

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "solver/simulation/cell_overlap.hpp"
-#include "solver/simulation/cell_seeding.hpp"
+#include "solver/simulation/detail/cell_seeding.hpp"
 
 using namespace rbcal::solver;
 

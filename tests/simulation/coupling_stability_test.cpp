@@ -7,7 +7,7 @@
 #include <string>
 
 #include "formats/json_file.hpp"
-#include "solver/simulation/coupling_stability.hpp"
+#include "solver/simulation/detail/coupling_stability.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
 using namespace rbcal::solver;

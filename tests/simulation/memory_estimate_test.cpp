@@ -8,7 +8,7 @@
 
 #include "formats/format_error.hpp"
 #include "solver/simulation/case_runner.hpp"
-#include "solver/simulation/memory_estimate.hpp"
+#include "solver/simulation/detail/memory_estimate.hpp"
 #include "solver/simulation/simulation_case.hpp"
 #include "tests/simulation/small_sheared_case.hpp"
 

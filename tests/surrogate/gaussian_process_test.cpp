@@ -7,7 +7,7 @@
 #include <random>
 
 #include "surrogate/gaussian_process.hpp"
-#include "surrogate/hyperparameter_fit.hpp"
+#include "surrogate/detail/hyperparameter_fit.hpp"
 
 namespace rbcal::surrogate {
 namespace {

@@ -1,6 +1,6 @@
-#include "bench/stream_triad.hpp"
+#include "bench/detail/stream_triad.hpp"
 
-#include "bench/timing.hpp"
+#include "bench/detail/timing.hpp"
 #include "solver/aligned_vector.hpp"
 #include "solver/simd.hpp"
 

@@ -1,4 +1,4 @@
-#include "solver/sweep/case_claim.hpp"
+#include "solver/sweep/detail/case_claim.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,4 +1,4 @@
-#include "solver/simulation/memory_estimate.hpp"
+#include "solver/simulation/detail/memory_estimate.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "surrogate/hyperparameter_fit.hpp"
+#include "surrogate/detail/hyperparameter_fit.hpp"
 
 #include <ceres/ceres.h>
 

@@ -1,4 +1,4 @@
-#include "solver/io/vtk_writer.hpp"
+#include "solver/io/detail/vtk_writer.hpp"
 
 #include <cstdint>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "solver/io/format_duration.hpp"
+#include "solver/io/detail/format_duration.hpp"
 
 #include <iomanip>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "solver/numerics/lbfgs.hpp"
+#include "solver/numerics/detail/lbfgs.hpp"
 
 #include <cmath>
 #include <deque>

@@ -1,13 +1,13 @@
-#include "solver/device/device_kernels.hpp"
+#include "solver/device/detail/device_kernels.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <utility>
 
 #include "solver/coupling/kernel_stencil.hpp"
-#include "solver/device/device_runtime.hpp"
+#include "solver/device/detail/device_runtime.hpp"
 #include "solver/fluid/d3q19.hpp"
-#include "solver/fluid/trt_collision.hpp"
+#include "solver/fluid/detail/trt_collision.hpp"
 
 namespace rbcal::solver::device_kernels {
 

@@ -1,4 +1,4 @@
-#include "solver/simulation/coupling_stability.hpp"
+#include "solver/simulation/detail/coupling_stability.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "solver/simulation/cell_seeding.hpp"
+#include "solver/simulation/detail/cell_seeding.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
