@@ -12,7 +12,8 @@
 // carried by its prior instead of being folded into each point as if independent.
 // Priors (independent):
 //   ln G_s     ~ uniform on [ln G_s_min, ln G_s_max]  (scale-invariant over the stated range)
-//   ln lambda  ~ uniform on [ln lambda_min, ln lambda_max], by default the model's lambda range
+//   ln lambda  ~ normal(ln setup.lambda, setup.lambda_prior_log_sd) truncated to [ln lambda_min,
+//                ln lambda_max], by default the model's lambda range (uniform there with sd 0)
 //   ln sigma_d ~ normal(ln discrepancy_prior_median, discrepancy_prior_log_sd)  (weakly informative)
 //   ln eta0    ~ normal(ln eta0_hat, se(eta0_hat) / eta0_hat)  (the plasma plateau's estimate)
 //   each of the model's nuisance parameters (surrogate/viscosity_model.hpp; a surrogate family's
@@ -23,9 +24,9 @@
 
 #include <Eigen/Dense>
 
-#include "calibration/parameter_layout.hpp"
 #include "calibration/calibration_input.hpp"
 #include "calibration/model_setup.hpp"
+#include "calibration/parameter_layout.hpp"
 #include "calibration/viscosity_observation.hpp"
 #include "surrogate/viscosity_model.hpp"
 
