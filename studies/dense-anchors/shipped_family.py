@@ -10,7 +10,8 @@ import subprocess
 import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-FAMILY = os.path.join(ROOT, "data", "library", "default", "surrogate_family.json")
+# RBCAL_FAMILY names another family file (e.g. one built from wide_family_recipe.json).
+FAMILY = os.environ.get("RBCAL_FAMILY", os.path.join(ROOT, "data", "library", "default", "surrogate_family.json"))
 BOX = json.load(open(FAMILY)).get("box_correction", {})
 BETA_MEAN, BETA_SD = BOX.get("mean", 0.102), BOX.get("sd", 0.070)
 RBCAL = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "rbcal")
