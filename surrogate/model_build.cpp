@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "formats/json_file.hpp"
+#include "formats/library_schema.hpp"
 #include "formats/printf_string.hpp"
 #include "formats/provenance.hpp"
 #include "surrogate/box_twins.hpp"
@@ -47,6 +48,28 @@ nlohmann::json with_recipe(nlohmann::json j, const ModelRecipe& recipe) {
   return j;
 }
 
+// OUT/cases and OUT/family_members are replaced by the build; refused, before anything is
+// written, where that would lose runs: OUT is one of the recipe's run folders, or OUT/cases
+// holds a file that is not a mapped case (one the mapping wrote, with its raw values kept).
+void check_output_is_replaceable(const ModelRecipe& recipe, const fs::path& out) {
+  const fs::path target = fs::weakly_canonical(out);
+  for (const fs::path& runs : recipe.runs)
+    if (fs::weakly_canonical(runs) == target)
+      throw std::invalid_argument("rbcal model build: the output folder " + out.string() + " is the run folder " +
+                                  runs.string() + " of " + recipe.file.string() +
+                                  " (its cases/ would be replaced); build into another folder");
+  const fs::path cases = out / "cases";
+  if (!fs::is_directory(cases)) return;
+  for (const auto& entry : fs::directory_iterator(cases)) {
+    if (entry.path().extension() != ".json") continue;
+    const nlohmann::json j = formats::read_json_file(entry.path());
+    if (!(j.contains("extrapolation") && j["extrapolation"].value("method", "") == formats::kEffectiveVolumeFraction))
+      throw std::invalid_argument("rbcal model build: " + entry.path().string() +
+                                  " is not a mapped case (no extrapolation.method \"effective volume fraction\"), "
+                                  "and the build replaces " + cases.string() + ": build into another folder");
+  }
+}
+
 // Drops the cases that are not among `keep`'s (by id).
 void keep_only(MappedLibrary& mapped, const MappedLibrary& keep) {
   std::set<std::string> ids;
@@ -68,6 +91,7 @@ ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const Vol
               provenance.value("git_revision", "").c_str(), provenance.value("date", "").c_str()));
   if (!recipe.about.empty()) note("  " + recipe.about + "\n");
 
+  check_output_is_replaceable(recipe, out);
   // 1. The runs at their effective volume fraction.
   std::vector<SimulationLibrary> tiers;
   for (const fs::path& r : recipe.runs) tiers.push_back(read_library(r));

@@ -168,3 +168,36 @@ TEST(ModelRecipe, ErrorsNameTheFileAndTheField) {
 
 }  // namespace
 }  // namespace rbcal::surrogate
+
+namespace rbcal::surrogate {
+namespace {
+
+// The build replaces OUT/cases: it refuses, before writing anything, an output folder that is
+// one of the recipe's run folders, or whose cases/ holds a run that is not a mapped case.
+TEST(ModelBuild, RefusesAnOutputThatWouldLoseRuns) {
+  const ModelRecipe recipe = read_model_recipe(kLibrary / "recipe.json");
+  const VolumeRatio ratio = volume_ratio_of_library(recipe.runs.front());
+  auto message = [&](const fs::path& out) -> std::string {
+    try {
+      build_model(recipe, out, ratio);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "built";
+  };
+  const std::string into_runs = message(recipe.runs.back());
+  EXPECT_NE(into_runs.find("is the run folder"), std::string::npos) << into_runs;
+  // A folder whose cases/ holds a raw run (copied from a tier): refused, the run kept.
+  const fs::path out = scratch("raw_run");
+  fs::create_directories(out / "cases");
+  const fs::path raw = read_library(recipe.runs.back()).cases.front().source;
+  fs::copy_file(raw, out / "cases" / raw.filename());
+  const std::string over_raw = message(out);
+  EXPECT_NE(over_raw.find("is not a mapped case"), std::string::npos) << over_raw;
+  EXPECT_TRUE(fs::exists(out / "cases" / raw.filename()));
+  EXPECT_FALSE(fs::exists(out / "surrogate.json"));
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace rbcal::surrogate
