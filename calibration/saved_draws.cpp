@@ -32,7 +32,18 @@ SavedDraws saved_draws(const surrogate::ViscosityModel& model, const McmcCalibra
   for (const EnsembleChain& c : r.chains)
     if (c.walkers() != out.walkers) throw std::invalid_argument("saved draws: chains with different walker counts");
   out.chains = static_cast<int>(r.chains.size());
-  const DrawThinning t = thin_draws(r, max_draws);
+  DrawThinning t = thin_draws(r, max_draws);
+  // The point-wise log-likelihood holds draws x points numbers, each draw a prediction at every
+  // point: beyond kMaxLikelihoodValues (4 MB; a sample of hundreds of points) every m-th kept
+  // step only, still counted back from the last step, so the steps stay a subset of chains.csv's.
+  const long long per_step = static_cast<long long>(out.chains) * out.walkers;
+  const long long kept_steps = std::max(0, r.steps - t.first + t.thin - 1) / t.thin;
+  const long long values = kept_steps * per_step * static_cast<long long>(calibration.points.size());
+  if (values > kMaxLikelihoodValues) {
+    t.thin *= static_cast<int>((values + kMaxLikelihoodValues - 1) / kMaxLikelihoodValues);
+    const int kept = std::max(0, r.steps - r.burn_in_steps);
+    t.first = r.burn_in_steps + (kept > 0 ? (kept - 1) % t.thin : 0);
+  }
   for (int step = t.first; step < r.steps; step += t.thin) out.steps.push_back(step);
   const Eigen::Index series = static_cast<Eigen::Index>(out.chains) * out.walkers;
   const Eigen::Index per = static_cast<Eigen::Index>(out.steps.size()), dims = static_cast<Eigen::Index>(r.parameter_names.size());

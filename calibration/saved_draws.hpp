@@ -37,6 +37,8 @@ struct SavedDraws {
   std::vector<double> observed_eta_re;         // each point's measured eta_re (at the plateau eta0)
 };
 
+// At most about max_draws draws (thin_draws), fewer where draws x points would exceed this.
+inline constexpr long long kMaxLikelihoodValues = 500'000;
 SavedDraws saved_draws(const surrogate::ViscosityModel& model, const McmcCalibration& calibration, int max_draws);
 
 }  // namespace rbcal::calibration
