@@ -10,16 +10,29 @@
 
 namespace rbcal::calibration {
 
+namespace {
+
+// Every `thin`-th step after burn-in, counted back from the last step, so that the final state
+// is always kept (and a thinning by a multiple of `thin` keeps a subset of these steps).
+DrawThinning every_nth_step(const McmcResult& r, int thin) {
+  const int kept = std::max(0, r.steps - r.burn_in_steps);
+  return {r.burn_in_steps + (kept > 0 ? (kept - 1) % thin : 0), thin};
+}
+
+std::vector<int> steps_of(const McmcResult& r, const DrawThinning& t) {
+  std::vector<int> steps;
+  for (int step = t.first; step < r.steps; step += t.thin) steps.push_back(step);
+  return steps;
+}
+
+}  // namespace
+
 DrawThinning thin_draws(const McmcResult& r, int max_draws) {
   long long per_step = 0;
   for (const EnsembleChain& c : r.chains) per_step += c.walkers();
   const long long kept_steps = std::max(0, r.steps - r.burn_in_steps);
   const long long budget = std::max(1, max_draws);
-  DrawThinning t;
-  t.thin = static_cast<int>(std::max(1LL, (kept_steps * per_step + budget - 1) / budget));
-  // Counted back from the last step, so that the final state is always kept.
-  t.first = r.burn_in_steps + static_cast<int>(kept_steps > 0 ? (kept_steps - 1) % t.thin : 0);
-  return t;
+  return every_nth_step(r, static_cast<int>(std::max(1LL, (kept_steps * per_step + budget - 1) / budget)));
 }
 
 SavedDraws saved_draws(const surrogate::ViscosityModel& model, const McmcCalibration& calibration, int max_draws) {
@@ -32,19 +45,16 @@ SavedDraws saved_draws(const surrogate::ViscosityModel& model, const McmcCalibra
   for (const EnsembleChain& c : r.chains)
     if (c.walkers() != out.walkers) throw std::invalid_argument("saved draws: chains with different walker counts");
   out.chains = static_cast<int>(r.chains.size());
-  DrawThinning t = thin_draws(r, max_draws);
+  const DrawThinning t = thin_draws(r, max_draws);
+  out.steps = steps_of(r, t);
   // The point-wise log-likelihood holds draws x points numbers, each draw a prediction at every
-  // point: beyond kMaxLikelihoodValues (4 MB; a sample of hundreds of points) every m-th kept
-  // step only, still counted back from the last step, so the steps stay a subset of chains.csv's.
-  const long long per_step = static_cast<long long>(out.chains) * out.walkers;
-  const long long kept_steps = std::max(0, r.steps - t.first + t.thin - 1) / t.thin;
-  const long long values = kept_steps * per_step * static_cast<long long>(calibration.points.size());
-  if (values > kMaxLikelihoodValues) {
-    t.thin *= static_cast<int>((values + kMaxLikelihoodValues - 1) / kMaxLikelihoodValues);
-    const int kept = std::max(0, r.steps - r.burn_in_steps);
-    t.first = r.burn_in_steps + (kept > 0 ? (kept - 1) % t.thin : 0);
-  }
-  for (int step = t.first; step < r.steps; step += t.thin) out.steps.push_back(step);
+  // point: beyond kMaxLikelihoodValues (4 MB; a sample of hundreds of points) every m-th of
+  // these steps only, so that they stay a subset of chains.csv's.
+  const long long values = static_cast<long long>(out.steps.size()) * out.chains * out.walkers *
+                           static_cast<long long>(calibration.points.size());
+  if (values > kMaxLikelihoodValues)
+    out.steps = steps_of(r, every_nth_step(r, t.thin * static_cast<int>((values + kMaxLikelihoodValues - 1) /
+                                                                         kMaxLikelihoodValues)));
   const Eigen::Index series = static_cast<Eigen::Index>(out.chains) * out.walkers;
   const Eigen::Index per = static_cast<Eigen::Index>(out.steps.size()), dims = static_cast<Eigen::Index>(r.parameter_names.size());
   out.parameters.resize(series * per, dims);

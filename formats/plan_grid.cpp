@@ -5,7 +5,6 @@
 #include <tuple>
 
 #include "formats/field_reader.hpp"
-#include "formats/json_file.hpp"
 #include "formats/library_schema.hpp"
 #include "formats/short_number.hpp"
 
@@ -92,10 +91,6 @@ ParameterGrid plan_grid_from_json(const nlohmann::json& plan, const std::string&
   g.capillary_number = axis(r, "grid.Ca", kCapillaryNumberBounds);
   g.viscosity_ratio = axis(r, "grid.lambda", kViscosityRatioBounds);
   return g;
-}
-
-ParameterGrid read_plan_grid(const std::filesystem::path& plan_file) {
-  return plan_grid_from_json(read_json_file(plan_file), plan_file.string());
 }
 
 }  // namespace rbcal::formats

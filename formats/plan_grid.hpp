@@ -6,7 +6,6 @@
 // The other keys (description, base case, max_shear_modulus_lattice) belong to the
 // sweep that runs the plan (solver/sweep/sweep_plan.hpp). Each axis is a non-empty array
 // of distinct numbers within the bounds below, the same bounds a case file's params obey.
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -40,6 +39,8 @@ struct ParameterGrid {
 // Checks the top level (an object of schema "rbcal.plan/1") and the grid; FormatError
 // names the source and the field.
 ParameterGrid plan_grid_from_json(const nlohmann::json& plan, const std::string& source);
-ParameterGrid read_plan_grid(const std::filesystem::path& plan_file);
+// A plan may instead name case files ("case_files": [...], solver/sweep/sweep_plan.hpp): it
+// has no grid, and its cases' own values span the library.
+inline bool names_case_files(const nlohmann::json& plan) { return plan.is_object() && plan.contains("case_files"); }
 
 }  // namespace rbcal::formats

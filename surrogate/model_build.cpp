@@ -34,9 +34,7 @@ double rounded(double x, int decimals) {
 // The surrogate of the library at `root`, fitted or with `like`'s hyper-parameters, its sd
 // scale fixed when the recipe says so.
 ViscositySurrogate fit_member(const ModelRecipe& recipe, const fs::path& root, const ViscositySurrogate* like) {
-  ViscositySurrogate s = like ? ViscositySurrogate::with_hyperparameters_of(training_cases(read_library(root)), *like,
-                                                                            root.string())
-                              : build_surrogate(root);
+  ViscositySurrogate s = like ? build_surrogate_like(root, *like) : build_surrogate(root);
   if (!recipe.sd_scale) return s;
   return ViscositySurrogate(s.training_cases(), s.process().hyperparameters(), root.string(), s.fit_info(),
                             *recipe.sd_scale);

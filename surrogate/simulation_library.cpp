@@ -6,6 +6,7 @@
 
 #include "formats/format_error.hpp"
 #include "formats/json_file.hpp"
+#include "formats/plan_grid.hpp"
 #include "formats/library_schema.hpp"
 
 namespace rbcal::surrogate {
@@ -63,9 +64,8 @@ SimulationLibrary read_library(const std::filesystem::path& root) {
   check_library_consistency(lib.cases);
   const fs::path plan = formats::library_layout::plan(root);
   if (fs::exists(plan)) {
-    // A plan of case files has no grid: the cases' own values span the library.
     const nlohmann::json document = formats::read_json_file(plan);
-    if (!(document.is_object() && document.contains("case_files")))
+    if (!formats::names_case_files(document))
       lib.plan = formats::plan_grid_from_json(document, plan.string());
   }
   return lib;

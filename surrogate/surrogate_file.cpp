@@ -130,8 +130,12 @@ ViscositySurrogate build_surrogate(const std::filesystem::path& library_root) {
 
 ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root,
                                         const std::filesystem::path& reference_file) {
-  return ViscositySurrogate::with_hyperparameters_of(training_cases(read_library(library_root)),
-                                                     load_surrogate(reference_file), library_root.string());
+  return build_surrogate_like(library_root, load_surrogate(reference_file));
+}
+
+ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root, const ViscositySurrogate& reference) {
+  return ViscositySurrogate::with_hyperparameters_of(training_cases(read_library(library_root)), reference,
+                                                     library_root.string());
 }
 
 }  // namespace rbcal::surrogate

@@ -25,5 +25,7 @@ ViscositySurrogate build_surrogate(const std::filesystem::path& library_root);
 // The same with the hyper-parameters of the surrogate in reference_file (not fitted).
 ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root,
                                         const std::filesystem::path& reference_file);
+// ... or of this surrogate.
+ViscositySurrogate build_surrogate_like(const std::filesystem::path& library_root, const ViscositySurrogate& reference);
 
 }  // namespace rbcal::surrogate

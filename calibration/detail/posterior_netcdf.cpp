@@ -20,6 +20,9 @@ class NetcdfFile {
  public:
   explicit NetcdfFile(std::filesystem::path path) : path_(std::move(path)) {
     check(nc_create(path_.c_str(), NC_NETCDF4 | NC_CLOBBER, &id_), "create");
+    const nlohmann::json provenance = formats::provenance_block();
+    created_at_ = provenance.value("date", "");
+    library_version_ = provenance.value("rbcal_version", "") + " (" + provenance.value("git_revision", "") + ")";
   }
   NetcdfFile(const NetcdfFile&) = delete;
   NetcdfFile& operator=(const NetcdfFile&) = delete;
@@ -39,11 +42,9 @@ class NetcdfFile {
   int group(const std::string& name) {
     int g = -1;
     check(nc_def_grp(id_, name.c_str(), &g), "group " + name);
-    text(g, NC_GLOBAL, "created_at", formats::utc_date());
+    text(g, NC_GLOBAL, "created_at", created_at_);
     text(g, NC_GLOBAL, "inference_library", "rbcal");
-    const nlohmann::json provenance = formats::provenance_block();
-    text(g, NC_GLOBAL, "inference_library_version",
-         provenance.value("rbcal_version", "") + " (" + provenance.value("git_revision", "") + ")");
+    text(g, NC_GLOBAL, "inference_library_version", library_version_);
     return g;
   }
   // A dimension with an integer coordinate variable of the same name.
@@ -67,6 +68,7 @@ class NetcdfFile {
  private:
   std::filesystem::path path_;
   int id_ = -1;
+  std::string created_at_, library_version_;  // the same in every group
 };
 
 // A sampled parameter as the report shows it: name, units, and its value from the sampled one.

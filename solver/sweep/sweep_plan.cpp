@@ -43,7 +43,7 @@ SweepPlan case_file_plan(const nlohmann::json& j, const std::string& path) {
 }  // namespace
 
 SweepPlan sweep_plan_from_json(const nlohmann::json& j, const std::string& path) {
-  if (j.is_object() && j.contains("case_files")) return case_file_plan(j, path);
+  if (formats::names_case_files(j)) return case_file_plan(j, path);
   const formats::ParameterGrid grid = formats::plan_grid_from_json(j, path);  // checks the schema too
   const formats::FieldReader r(j, path);
   SweepPlan plan;

@@ -9,40 +9,23 @@ compare is the family at phi = phi as run (the continuum, no thickening), in the
 correction), at three of its offsets: each member is the library mapped with its own c. Usage, from the repository root:
   python3 studies/dense-anchors/resolution.py [RBCAL]
 """
-import glob
-import json
-import math
 import os
-import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from shipped_family import BETA_MEAN as beta, ROOT, g
-from shipped_family import member_eta as member
+from shipped_family import anchor_runs, first_order_extrapolation, member_in_gap, point_parameters
 
-
-runs = {}
-for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
-    name = os.path.basename(path)[: -len(".result.json")]
-    n_a, point = re.match(r"n(\d+)_(.*)", name).groups()
-    r = json.load(open(path))["result"]
-    runs.setdefault(point, {})[int(n_a)] = (r["eta_re"], r["eta_re_sem"], r["phi_actual"])
-
+runs = anchor_runs()
 print("| point | N_a 8 | N_a 12 | N_a 16 | extrapolated (first order in 1/N_a) | family at phi as run, 16a gap: c 0.45 / 0.75 / 1.05 |")
 print("|---|---|---|---|---|---|")
 for point in sorted(runs):
     by = runs[point]
     cells = [f"{by[n][0]:.3f} +- {by[n][1]:.3f}" if n in by else "-" for n in (8, 12, 16)]
-    have = sorted(by)
     extrapolated = "-"
-    if len(have) >= 2:
-        n1, n2 = have[0], have[-1]
-        (e1, s1, _), (e2, s2, _) = by[n1], by[n2]
-        inf = (n2 * e2 - n1 * e1) / (n2 - n1)
-        sem = math.hypot(n2 * s2, n1 * s1) / (n2 - n1)
+    if (e := first_order_extrapolation(by)) is not None:
+        inf, sem, n1, n2 = e
         extrapolated = f"{inf:.3f} +- {sem:.3f} (N_a {n1}, {n2})"
-    ca = float(re.search(r"_Ca([0-9.]+)_", point).group(1))
-    lam = float(re.search(r"_lambda([0-9.]+)", point).group(1))
+    ca, lam = point_parameters(point)
     phi = next(iter(by.values()))[2]
-    model = [math.exp((1.0 + beta) * math.log(member(phi, ca, lam, c))) for c in (0.45, 0.75, 1.05)]
+    model = [member_in_gap(phi, ca, lam, c) for c in (0.45, 0.75, 1.05)]
     print(f"| {point} | " + " | ".join(cells) + f" | {extrapolated} | " + " / ".join(f"{m:.3f}" for m in model) + " |")

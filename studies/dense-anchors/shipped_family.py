@@ -1,11 +1,14 @@
 """The shipped surrogate family as the anchor scripts ask it: its file, its box correction,
 the thickened-volume factor g_c(N_a) of the 1280-triangle Evans-Fung mesh, and one member's
 prediction through `rbcal surrogate predict` (the scripts' one optional argument names the
-rbcal to call; default: this clone's build). Imported by blind_predictions.py,
-implied_offset.py and resolution.py."""
+rbcal to call; default: this clone's build), and the finished anchors with their first-order
+extrapolation in 1/N_a. Imported by blind_predictions.py, implied_offset.py, resolution.py and
+asked_offset.py."""
+import glob
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -39,3 +42,37 @@ def member(phi, ca, lam, c):
 def member_eta(phi, ca, lam, c):
     """eta_re of the family's member at offset c."""
     return member(phi, ca, lam, c)[0]
+
+
+def anchor_runs():
+    """The committed anchors: {point: {N_a: (eta_re, sem, phi_actual)}}, point e.g.
+    "phieff0.40_Ca0.5_lambda5"."""
+    runs = {}
+    for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
+        name = os.path.basename(path)[: -len(".result.json")]
+        n_a, point = re.match(r"n(\d+)_(.*)", name).groups()
+        r = json.load(open(path))["result"]
+        runs.setdefault(point, {})[int(n_a)] = (r["eta_re"], r["eta_re_sem"], r["phi_actual"])
+    return runs
+
+
+def first_order_extrapolation(by):
+    """(eta_inf, sem, n1, n2) from the coarsest and finest runs of one point, first order in
+    1/N_a; None with fewer than two resolutions."""
+    have = sorted(by)
+    if len(have) < 2:
+        return None
+    n1, n2 = have[0], have[-1]
+    (e1, s1, _), (e2, s2, _) = by[n1], by[n2]
+    return (n2 * e2 - n1 * e1) / (n2 - n1), math.hypot(n2 * s2, n1 * s1) / (n2 - n1), n1, n2
+
+
+def member_in_gap(phi, ca, lam, c):
+    """The member at offset c in the anchors' 16a gap: the box correction at its prior mean,
+    ln eta = (1 + beta) ln eta_bulk."""
+    return math.exp((1.0 + BETA_MEAN) * math.log(member_eta(phi, ca, lam, c)))
+
+
+def point_parameters(point):
+    """(Ca, lambda) of an anchor point's name."""
+    return (float(re.search(r"_Ca([0-9.]+)_", point).group(1)), float(re.search(r"_lambda([0-9.]+)", point).group(1)))
