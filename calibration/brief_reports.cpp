@@ -6,7 +6,7 @@
 #include <string>
 
 #include "calibration/calibration_report.hpp"
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "formats/printf_string.hpp"
 
 namespace rbcal::calibration {

@@ -21,7 +21,7 @@
 #include "calibration/saved_draws.hpp"
 #include "calibration/predictive_bands.hpp"
 #include "calibration/sample_comparison.hpp"
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "formats/host_memory.hpp"
 #include "formats/short_number.hpp"
 #include "surrogate/fixed_nuisance_model.hpp"

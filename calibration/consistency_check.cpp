@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "calibration/calibration_report.hpp"
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 
 namespace rbcal::calibration {
 

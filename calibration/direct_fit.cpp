@@ -16,7 +16,7 @@
 #include <utility>
 
 #include "calibration/joint_likelihood.hpp"
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "calibration/viscosity_observation.hpp"
 
 namespace rbcal::calibration {

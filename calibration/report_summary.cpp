@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "formats/library_schema.hpp"
 #include "formats/provenance.hpp"
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
+#include <ostream>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -192,6 +194,20 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
                                "rows or one plasma_assumed row with the assumed eta0 and its sd)");
   }
   return data;
+}
+
+void write_rheometer_csv(const RheometerData& data, std::ostream& out) {
+  for (const auto& line : data.provenance) out << "# " << line << '\n';
+  for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
+  out << '\n' << std::setprecision(10);
+  for (const auto& row : data.rows) {
+    const char* kind = row.kind == MeasurementKind::plasma           ? "plasma"
+                       : row.kind == MeasurementKind::plasma_assumed ? "plasma_assumed"
+                                                                     : "suspension";
+    out << row.sample << ',' << kind << ',' << row.phi << ',' << row.shear_rate << ','
+        << row.viscosity / kPascalSecondsPerMilli << ',' << row.viscosity_sd / kPascalSecondsPerMilli << ','
+        << row.repeats << '\n';
+  }
 }
 
 }  // namespace rbcal::calibration

@@ -17,6 +17,7 @@
 #include "bench/roofline.hpp"
 #include "cli/backend_option.hpp"
 #include "cli/commands.hpp"
+#include "formats/units.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
 #include "rbcal/build_info.hpp"
@@ -63,9 +64,9 @@ void run_calibration_bench(const BenchOptions& o) {
   const auto rows = bench::time_calibration_scaling(*model, options, [](const bench::CalibrationScalingRow& r) {
     if (r.all_seconds >= 0.0)
       std::printf("| %d | %.2f | %.1f | %.1f | %lld | %.3f | %.3f |\n", r.points, r.direct_seconds, r.all_seconds,
-                  r.mcmc_seconds, r.mcmc_evaluations, r.direct_shear_modulus * 1e6, r.mcmc_shear_modulus * 1e6);
+                  r.mcmc_seconds, r.mcmc_evaluations, r.direct_shear_modulus * kMicro, r.mcmc_shear_modulus * kMicro);
     else
-      std::printf("| %d | %.2f | - | - | - | %.3f | - |\n", r.points, r.direct_seconds, r.direct_shear_modulus * 1e6);
+      std::printf("| %d | %.2f | - | - | - | %.3f | - |\n", r.points, r.direct_seconds, r.direct_shear_modulus * kMicro);
     std::fflush(stdout);
   });
   if (!o.json_path.empty()) {

@@ -11,6 +11,7 @@
 
 #include "calibration/calibration_job.hpp"
 #include "cli/commands.hpp"
+#include "formats/units.hpp"
 #include "cli/number_validators.hpp"
 #include "cli/data_folder.hpp"
 
@@ -26,7 +27,7 @@ struct CalibrateOptions {
   std::string data = shipped_file("samples/kim2017_whole_blood.csv");
   std::string surrogate = shipped_file("library/default/surrogate_family.json");
   std::string report = "calibration_report";
-  double cell_radius_um = cal::kDefaultCellRadius * 1e6;
+  double cell_radius_um = cal::kDefaultCellRadius * kMicro;
   bool no_plots = false;
   std::string sampler = "independence";
   std::vector<std::string> hold;  // NAME=VALUE
@@ -159,7 +160,7 @@ void add_calibrate_command(CLI::App& app) {
     job.data_file = o->data;
     job.surrogate_file = o->surrogate;
     job.report_folder = o->report;
-    job.setup.cell_radius = o->cell_radius_um * 1e-6;
+    job.setup.cell_radius = o->cell_radius_um / kMicro;
     job.report.plots = !o->no_plots;
     job.sampler.sampler = cal::sampler_from_string(o->sampler);
     for (const std::string& h : o->hold) job.held_nuisances.push_back(held_nuisance(h));

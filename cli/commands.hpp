@@ -18,6 +18,7 @@ void add_overlaps_command(CLI::App& app);
 void add_surrogate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_model_command(CLI::App& app);
+void add_recover_command(CLI::App& app);
 // `show` and `propose` under the `library` sub-command (created in main.cpp).
 void add_library_inspect_commands(CLI::App& library);
 // `generate` under the `library` sub-command.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "formats/units.hpp"
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
 #include "solver/fluid/couette_flow.hpp"
@@ -41,7 +42,7 @@ void run_couette(const CouetteOptions& opts) {
               std::abs(measured_rate / o.shear_rate - 1.0));
   std::printf("  wall shear stress    %12.6e Pa\n", wall_stress);
   std::printf("  viscosity from walls %12.6f mPa s (imposed %.6f, relative error %.1e)\n",
-              measured_viscosity * 1e3, o.plasma_viscosity * 1e3,
+              measured_viscosity * kMilli, o.plasma_viscosity * kMilli,
               std::abs(measured_viscosity / o.plasma_viscosity - 1.0));
 
   if (!opts.json_path.empty()) {

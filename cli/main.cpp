@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   rbcal::cli::add_surrogate_command(app);
   rbcal::cli::add_calibrate_command(app);
   rbcal::cli::add_model_command(app);
+  rbcal::cli::add_recover_command(app);
   CLI::App* library = app.add_subcommand("library", "Simulation libraries: generate, show, propose, extrapolate, effective-phi");
   library->require_subcommand(1);
   rbcal::cli::add_library_generate_command(*library);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "formats/provenance.hpp"
 
 namespace rbcal::calibration {

@@ -11,7 +11,7 @@
 
 #include "calibration/quantiles.hpp"
 #include "calibration/detail/report_tables.hpp"
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "formats/short_number.hpp"
 
 namespace rbcal::calibration {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "calibration/detail/units.hpp"
+#include "formats/units.hpp"
 #include "calibration/saved_draws.hpp"
 #include "formats/short_number.hpp"
 

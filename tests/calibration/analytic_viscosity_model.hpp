@@ -30,4 +30,14 @@ class AnalyticViscosityModel : public surrogate::ViscosityModel {
   surrogate::ParameterRange range() const override { return box; }
 };
 
+// The law of the tests' synthetic rheometer file (data/make_synthetic_rheometer.py):
+// c0 2.5, c1 0.4, no lambda dependence.
+inline AnalyticViscosityModel synthetic_rheometer_law() {
+  AnalyticViscosityModel m;
+  m.c0 = 2.5;
+  m.c1 = 0.4;
+  m.c2 = 0.0;
+  return m;
+}
+
 }  // namespace rbcal::calibration::test_models

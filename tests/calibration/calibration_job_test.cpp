@@ -15,13 +15,7 @@ using rbcal::calibration::test_models::AnalyticViscosityModel;
 
 namespace {
 
-AnalyticViscosityModel synthetic_law() {
-  AnalyticViscosityModel m;
-  m.c0 = 2.5;
-  m.c1 = 0.4;
-  m.c2 = 0.0;
-  return m;
-}
+AnalyticViscosityModel synthetic_law() { return test_models::synthetic_rheometer_law(); }
 
 CalibrationJobOptions options(const std::string& method) {
   CalibrationJobOptions o;

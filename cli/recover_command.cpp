@@ -1,0 +1,136 @@
+// `rbcal recover RUN... [--surrogate MODEL]`: samples of known G_s made from simulation results
+// (calibration/synthetic_sample.hpp), calibrated as `rbcal calibrate` would, and the coverage
+// of each method's 95 % interval (calibration/known_truth_recovery.hpp).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "formats/units.hpp"
+#include "calibration/known_truth_recovery.hpp"
+#include "cli/cell_thickening.hpp"
+#include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
+#include "cli/number_validators.hpp"
+#include "surrogate/library_case.hpp"
+#include "surrogate/offset_family_file.hpp"
+
+namespace rbcal::cli {
+
+namespace {
+
+struct RecoverOptions {
+  std::vector<std::string> runs;
+  std::string surrogate = shipped_file("library/default/surrogate_family.json");
+  std::vector<double> shear_moduli_uN = {1.0, 2.0, 4.0, 8.0};
+  int replicates = 3;
+  double plasma_viscosity_mPa = 1.2;
+  double plasma_relative_sd = 0.02;
+  double cell_radius_um = 4.0;
+  double noise = 0.05;
+  unsigned long long seed = 1;
+  double offset = 0.75;
+  std::string method = "all";
+  std::string output;
+  double required_coverage = 0.0;
+};
+
+// A run's point: eta_re at the volume fraction its thickened cells fill (offset c lattice
+// spacings, as `rbcal library effective-phi` maps it; c 0: the volume fraction as run).
+calibration::SimulatedViscosity simulated_point(const surrogate::LibraryCase& c, double offset) {
+  if (offset > 0.0 && c.nodes_per_radius <= 0) throw std::invalid_argument(c.source.string() + ": field numerics.N_a: missing");
+  const double g = offset > 0.0 ? volume_ratio_of(cell_terms(c))(offset / c.nodes_per_radius) : 1.0;
+  // NAME.result.json (a run's result.json kept under its case's name) is called NAME.
+  std::string id = c.id;
+  if (id.ends_with(".result")) id.resize(id.size() - std::string(".result").size());
+  return {id, g * c.phi_actual, c.capillary_number, c.viscosity_ratio, c.eta_re, c.eta_re_sem};
+}
+
+void run_recover(const RecoverOptions& o) {
+  std::vector<calibration::SimulatedViscosity> points;
+  for (const std::string& f : o.runs) points.push_back(simulated_point(surrogate::read_library_case(f), o.offset));
+  calibration::RecoveryOptions r;
+  r.shear_moduli.clear();
+  for (double g : o.shear_moduli_uN) r.shear_moduli.push_back(g / kMicro);
+  r.replicates = o.replicates;
+  r.sample.plasma_viscosity = o.plasma_viscosity_mPa / kMilli;
+  r.sample.plasma_viscosity_relative_sd = o.plasma_relative_sd;
+  r.sample.cell_radius = o.cell_radius_um / kMicro;
+  r.sample.relative_noise = o.noise;
+  r.sample.seed = o.seed;
+  r.job.method = o.method;
+  r.job.surrogate_file = o.surrogate;
+  r.job.setup.cell_radius = r.sample.cell_radius;
+  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
+  std::printf("rbcal recover: %zu runs (phi at offset %g), model %s, %zu true G_s x %d noise draws\n", points.size(),
+              o.offset, o.surrogate.c_str(), r.shear_moduli.size(), r.replicates);
+  for (const auto& p : points)
+    std::printf("  %s: phi %.4f, Ca %g, lambda %g, eta_re %.4f +- %.4f\n", p.id.c_str(), p.phi, p.capillary_number,
+                p.viscosity_ratio, p.eta_re, p.eta_re_se);
+  std::fflush(stdout);
+  const calibration::RecoveryReport report = calibration::recover_known_shear_moduli(points, *model, r, std::cout);
+  std::printf("%s", report.table().c_str());
+  if (!o.output.empty()) {
+    std::ofstream out(o.output);
+    nlohmann::json j = report.to_json();
+    // Relative to the working folder: the record names no path of the machine it ran on.
+    j["model"] = std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();
+    j["offset"] = o.offset;
+    out << j.dump(1) << '\n';
+    if (!out) throw std::runtime_error("cannot write " + o.output);
+    std::printf("wrote %s\n", o.output.c_str());
+  }
+  if (o.required_coverage > 0.0)
+    for (const char* m : {"direct", "mcmc"})
+      if (const auto* c = report.method(m); c && c->fraction() < o.required_coverage) {
+        std::printf("%s: coverage %.2f below the required %.2f\n", m, c->fraction(), o.required_coverage);
+        throw ExitStatus{1};
+      }
+}
+
+}  // namespace
+
+void add_recover_command(CLI::App& app) {
+  auto o = std::make_shared<RecoverOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "recover",
+      "Simulated truth: samples of known G_s made from simulation results (shear rate = Ca G_s / (eta0 a), viscosity "
+      "= eta0 eta_re with relative noise), calibrated as `rbcal calibrate` does; prints whether each method's 95 % "
+      "interval holds the truth");
+  cmd->add_option("runs", o->runs, "Finished runs (result.json of `rbcal simulate`, or a library's cases/*.json)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--surrogate", o->surrogate, "Model to calibrate with (surrogate or family file)")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--shear-moduli", o->shear_moduli_uN, "True G_s [uN/m]")->delimiter(',')->capture_default_str();
+  cmd->add_option("--replicates", o->replicates, "Noise draws per true G_s")->capture_default_str()->check(
+      CLI::PositiveNumber);
+  cmd->add_option("--plasma-viscosity", o->plasma_viscosity_mPa, "eta0 [mPa s]")->capture_default_str()->check(
+      kPositive);
+  cmd->add_option("--plasma-relative-sd", o->plasma_relative_sd,
+                  "sd of the samples' plasma_assumed row, relative to eta0")
+      ->capture_default_str()
+      ->check(kPositive);
+  cmd->add_option("--cell-radius", o->cell_radius_um, "a [um]")->capture_default_str()->check(kPositive);
+  cmd->add_option("--noise", o->noise, "Relative sd of each reading")->capture_default_str()->check(kNonNegative);
+  cmd->add_option("--seed", o->seed, "Seed of the first sample's noise (then +1 per sample)")->capture_default_str();
+  cmd->add_option("--offset", o->offset,
+                  "Immersed-boundary offset c [lattice spacings] that maps each run to the volume fraction it stands "
+                  "for (0: the volume fraction as run)")
+      ->capture_default_str()
+      ->check(kNonNegative);
+  cmd->add_option("--method", o->method, "alpha, direct, mcmc or all")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"alpha", "direct", "mcmc", "all"}));
+  cmd->add_option("-o,--output", o->output, "Also write the cases and coverage as JSON (rbcal.recovery/1)");
+  cmd->add_option("--require-coverage", o->required_coverage,
+                  "Exit 1 when the direct fit's or the MCMC's coverage is below this fraction")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->callback([o] { run_recover(*o); });
+}
+
+}  // namespace rbcal::cli
