@@ -19,8 +19,8 @@ namespace rbcal::solver {
 enum class CellShape { Sphere, Biconcave, Spheroid };
 enum class Integrator { Euler, RK4 };
 // The fluid velocity that moves the membrane over a coupling interval of k fluid steps:
-// the mean of the velocities interpolated after each of the k steps, or (the scheme
-// before 2026-11-24, kept to reproduce earlier runs) the velocity after the last one.
+// the mean of the velocities interpolated after each of the k steps, or (the earlier
+// scheme, kept to reproduce runs made with it) the velocity after the last one.
 enum class NodeVelocity { IntervalMean, LastStep };
 
 struct CellPlacement {
