@@ -38,14 +38,14 @@ struct PointAtParameters {
   ViscosityObservation observation;
   RelativeViscosityPoint point;
   bool plasma_viscosity_is_parameter = false;
-  int nuisances = 0;  // how many of the nuisance blocks the model has
+  std::vector<std::string> nuisances;  // the names of the model's nuisance blocks in use
   std::pair<ObservedRelativeViscosity, surrogate::ViscosityPrediction> operator()(
       const double* ln_shear_modulus, const double* ln_lambda, const double* ln_plasma_viscosity,
       const double* nuisance0, const double* nuisance1) const {
     ViscosityObservation at = observation;
     at.plasma_viscosity = std::exp(ln_plasma_viscosity[0]);
     const double* values[kMaxModelNuisances] = {nuisance0, nuisance1};
-    for (int k = 0; k < nuisances; ++k) at.nuisance.push_back(values[k][0]);
+    for (std::size_t k = 0; k < nuisances.size(); ++k) at.nuisance.set(nuisances[k], values[k][0]);
     return {observed_relative_viscosity(point, plasma_viscosity_is_parameter, at.plasma_viscosity),
             at.predict(point, std::exp(ln_shear_modulus[0]), std::exp(ln_lambda[0]))};
   }
@@ -107,7 +107,7 @@ struct JointResidualBlock {
   ViscosityObservation observation;
   std::vector<RelativeViscosityPoint> points;
   bool plasma_viscosity_is_parameter = false;
-  int nuisances = 0;
+  std::vector<std::string> nuisances;  // the names of the model's nuisance blocks in use
   bool normalisation = false;           // false: the whitened residuals; true: the normalisation
   double ln_reference_determinant = 0.0;
   static constexpr double kShiftPerPoint = 10.0;
@@ -119,7 +119,7 @@ struct JointResidualBlock {
     return cache->get(key, [&] {
       ViscosityObservation with = observation;
       with.plasma_viscosity = std::exp(parameters[2][0]);
-      for (int k = 0; k < nuisances; ++k) with.nuisance.push_back(parameters[3 + k][0]);
+      for (std::size_t k = 0; k < nuisances.size(); ++k) with.nuisance.set(nuisances[k], parameters[3 + k][0]);
       return whiten(joint_residuals(with, points, std::exp(parameters[0][0]), std::exp(parameters[1][0]),
                                     plasma_viscosity_is_parameter));
     });
@@ -302,6 +302,13 @@ class DirectFit {
   }
 
  private:
+  // The names of the model's nuisances in use, in the order of their parameter blocks.
+  std::vector<std::string> nuisance_names() const {
+    std::vector<std::string> names;
+    for (const auto& n : nuisances_) names.push_back(n.name);
+    return names;
+  }
+
   static constexpr double kBoundTolerance = 1e-6;
 
   int rounds() const { return std::max(1, options_.max_selection_rounds); }
@@ -322,7 +329,7 @@ class DirectFit {
     ln_lambda_lo_ = std::log(std::max(range_.lambda_min, 1e-300));
     ln_lambda_hi_ = std::log(std::max(range_.lambda_max, 1e-300));
     if (options_.setup.fit_lambda) x_.ln_lambda = std::clamp(x_.ln_lambda, ln_lambda_lo_, ln_lambda_hi_);
-    for (const auto& p : sample_.points) residuals_.push_back({{obs_, p, fit_eta0_, n_nuisances_}});
+    for (const auto& p : sample_.points) residuals_.push_back({{obs_, p, fit_eta0_, nuisance_names()}});
     x_.ln_shear_modulus = scan_start(residuals_, obs_, sample_.points, options_, x_);
     ln_gs_lo_ = std::log(options_.shear_modulus_min);
     ln_gs_hi_ = std::log(options_.shear_modulus_max);
@@ -376,7 +383,7 @@ class DirectFit {
   void add_likelihood(ceres::Problem& problem, std::vector<ceres::ResidualBlockId>& normalisation_blocks) {
     const std::vector<double*> b = blocks();
     if (options_.loss == RobustLoss::none) {
-      JointResidualBlock joint{obs_, used_subset(sample_.points, used_), fit_eta0_, n_nuisances_};
+      JointResidualBlock joint{obs_, used_subset(sample_.points, used_), fit_eta0_, nuisance_names()};
       problem.AddResidualBlock(joint_cost(joint), nullptr, b);
       joint.normalisation = true;
       const WhitenedResiduals start = joint.at(b.data());
@@ -511,7 +518,7 @@ class DirectFit {
   void fitted_points() {
     ViscosityObservation at_estimate = obs_;
     at_estimate.plasma_viscosity = result_.plasma_viscosity;
-    for (int k = 0; k < n_nuisances_; ++k) at_estimate.nuisance.push_back(x_.nuisance[k]);
+    for (int k = 0; k < n_nuisances_; ++k) at_estimate.nuisance.set(nuisances_[k].name, x_.nuisance[k]);
     for (std::size_t i = 0; i < sample_.points.size(); ++i) {
       FittedPoint f;
       f.point = sample_.points[i];
@@ -535,7 +542,7 @@ class DirectFit {
     if (options_.loss == RobustLoss::none) {
       const std::vector<double*> b = blocks();
       const WhitenedResiduals w =
-          JointResidualBlock{obs_, used_subset(sample_.points, used_), fit_eta0_, n_nuisances_}.at(b.data());
+          JointResidualBlock{obs_, used_subset(sample_.points, used_), fit_eta0_, nuisance_names()}.at(b.data());
       if (w.ok) result_.chi_square = w.whitened.squaredNorm();
     }
     result_.degrees_of_freedom -= fitted_to_data_;

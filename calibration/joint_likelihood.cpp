@@ -17,7 +17,7 @@ JointResiduals joint_residuals(const ViscosityObservation& at, const std::vector
                          relative_discrepancy);
 }
 
-JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const std::vector<double>& nuisance,
+JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const surrogate::NuisanceValues& nuisance,
                                double cell_radius, const std::vector<SampleTerms>& samples,
                                double relative_discrepancy) {
   std::vector<surrogate::ParameterPoint> queries;

@@ -39,7 +39,7 @@ struct SampleTerms {
 // The samples' points in one vector (sample by sample) with the model's joint covariance over
 // all of them: the model's errors at two samples' points are as correlated as at one sample's
 // (the same runs, the same box correction, the same nuisance values).
-JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const std::vector<double>& nuisance,
+JointResiduals joint_residuals(const surrogate::ViscosityModel& model, const surrogate::NuisanceValues& nuisance,
                                double cell_radius, const std::vector<SampleTerms>& samples,
                                double relative_discrepancy = 0.0);
 

@@ -132,8 +132,8 @@ double JointLogPosterior::log_likelihood(const Eigen::VectorXd& theta) const {
           return -std::numeric_limits<double>::infinity();
     terms.push_back(t);
   }
-  std::vector<double> nuisance;
-  for (std::size_t k = 0; k < nuisances_.size(); ++k) nuisance.push_back(theta(nuisance_index_ + static_cast<int>(k)));
+  surrogate::NuisanceValues nuisance;
+  for (std::size_t k = 0; k < nuisances_.size(); ++k) nuisance.set(nuisances_[k].name, theta(nuisance_index_ + static_cast<int>(k)));
   return joint_log_likelihood(joint_residuals(*model_, nuisance, radius, terms));
 }
 

@@ -34,13 +34,13 @@ Extremes model_extremes(double phi, const surrogate::ViscosityModel& model, cons
   // A model's nuisance parameters (the offset) move it too: every
   // combination of their prior's min, mean and max is tried, so that no point is dropped that
   // another value of them could reach.
-  std::vector<std::vector<double>> settings{{}};
+  std::vector<surrogate::NuisanceValues> settings{{}};
   for (const surrogate::ModelNuisance& n : model.nuisances()) {
-    std::vector<std::vector<double>> next;
+    std::vector<surrogate::NuisanceValues> next;
     for (const auto& s : settings)
       for (double v : {n.min, n.mean, n.max}) {
         next.push_back(s);
-        next.back().push_back(v);
+        next.back().set(n.name, v);
       }
     settings = std::move(next);
   }
@@ -50,7 +50,7 @@ Extremes model_extremes(double phi, const surrogate::ViscosityModel& model, cons
       for (int k = 0; k < kCaSamples; ++k) {
         const double ca = r.ca_min * std::pow(r.ca_max / r.ca_min, k / (kCaSamples - 1.0));
         const surrogate::ViscosityPrediction p =
-            values.empty() ? model.predict(phi, ca, lambda) : model.predict_with(phi, ca, lambda, values);
+            model.predict(phi, ca, lambda, values);
         if (p.eta_re < e.min) e = {p.eta_re, p.sd, e.max, e.max_sd};
         if (p.eta_re > e.max) e = {e.min, e.min_sd, p.eta_re, p.sd};
       }

@@ -61,9 +61,10 @@ double nuisance_log_prior(double v, const surrogate::ModelNuisance& n) {
   return -0.5 * z * z - std::log(n.sd * std::sqrt(2.0 * std::numbers::pi) * mass);
 }
 
-std::vector<double> LogPosterior::nuisance_values(const Eigen::VectorXd& theta) const {
-  std::vector<double> values;
-  for (std::size_t k = 0; k < nuisances_.size(); ++k) values.push_back(theta(layout_.nuisance + static_cast<int>(k)));
+surrogate::NuisanceValues LogPosterior::nuisance_values(const Eigen::VectorXd& theta) const {
+  surrogate::NuisanceValues values;
+  for (std::size_t k = 0; k < nuisances_.size(); ++k)
+    values.set(nuisances_[k].name, theta(layout_.nuisance + static_cast<int>(k)));
   return values;
 }
 

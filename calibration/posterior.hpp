@@ -83,7 +83,7 @@ class LogPosterior {
   double lambda(const Eigen::VectorXd& theta) const;
   double discrepancy(const Eigen::VectorXd& theta) const;  // sigma_d (0 without it)
   double plasma_viscosity(const Eigen::VectorXd& theta) const;  // eta0 [Pa s]
-  std::vector<double> nuisance_values(const Eigen::VectorXd& theta) const;  // empty without them
+  surrogate::NuisanceValues nuisance_values(const Eigen::VectorXd& theta) const;  // empty without them
   // The observation at theta: eta0 and the model's nuisance values set.
   ViscosityObservation observation_at(const Eigen::VectorXd& theta) const;
 

@@ -46,17 +46,15 @@ struct ViscosityObservation {
   const surrogate::ViscosityModel* model = nullptr;
   double plasma_viscosity = 0.0;            // eta0 [Pa s]
   double cell_radius = kDefaultCellRadius;  // a [m]
-  // Values of the model's nuisance parameters (surrogate/viscosity_model.hpp); empty: their means.
-  std::vector<double> nuisance;
+  // Values of the model's nuisance parameters by name (surrogate/viscosity_model.hpp); empty: their means.
+  surrogate::NuisanceValues nuisance;
 
   double capillary_number_at(const RelativeViscosityPoint& point, double shear_modulus) const {
     return capillary_number(plasma_viscosity, point.shear_rate, cell_radius, shear_modulus);
   }
   surrogate::ViscosityPrediction predict(const RelativeViscosityPoint& point, double shear_modulus,
                                          double lambda) const {
-    const double ca = capillary_number_at(point, shear_modulus);
-    return nuisance.empty() ? model->predict(point.phi, ca, lambda)
-                            : model->predict_with(point.phi, ca, lambda, nuisance);
+    return model->predict(point.phi, capillary_number_at(point, shear_modulus), lambda, nuisance);
   }
   // predict at every point (batched by the model).
   std::vector<surrogate::ViscosityPrediction> predict_many(const std::vector<RelativeViscosityPoint>& points,
@@ -64,7 +62,7 @@ struct ViscosityObservation {
     std::vector<surrogate::ParameterPoint> queries;
     queries.reserve(points.size());
     for (const auto& point : points) queries.push_back({point.phi, capillary_number_at(point, shear_modulus), lambda});
-    return model->predict_many_with(queries, nuisance);
+    return model->predict_many(queries, nuisance);
   }
   // Whether the point's (phi, Ca, lambda) lies in the box the model was built on.
   bool inside_range(const RelativeViscosityPoint& point, double shear_modulus, double lambda) const {

@@ -77,7 +77,8 @@ void run_predict(const SurrogatePredictOptions& o) {
                                                  std::to_string(c.max));
     values.front() = o.offset;
   }
-  const surrogate::ViscosityPrediction p = s.predict_with(o.phi, o.ca, o.lambda, values);
+  const surrogate::ViscosityPrediction p =
+      s.predict(o.phi, o.ca, o.lambda, surrogate::NuisanceValues(nuisances, values));
   std::printf("phi %.4g, Ca %.4g, lambda %.4g\n", o.phi, o.ca, o.lambda);
   for (std::size_t k = 0; k < nuisances.size(); ++k)
     std::printf("  %-19s %.4g (%s; prior %.4g +- %.4g, %.4g .. %.4g)\n", nuisances[k].name.c_str(), values[k],

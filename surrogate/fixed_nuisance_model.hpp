@@ -15,25 +15,17 @@ class FixedNuisanceModel : public ViscosityModel {
   // outside its range. base must outlive this model.
   FixedNuisanceModel(const ViscosityModel& base, const std::string& name, double value);
 
-  ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
   ParameterRange range() const override { return base_.range(); }
   std::vector<ModelNuisance> nuisances() const override { return free_; }
-  ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
-                                   const std::vector<double>& values) const override;
-  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
-                                         const std::vector<double>& values,
-                                         CovarianceForm form = CovarianceForm::automatic) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
-  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
-                                                     const std::vector<double>& values) const override;
 
  private:
-  // The base model's nuisance values: the free ones given (or their means), the fixed one set.
-  std::vector<double> all_values(const std::vector<double>& free_values) const;
+  // The base model asked with the free values given and the fixed one set.
+  JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& queries, const NuisanceValues& values,
+                                            CovarianceForm form) const override;
 
   const ViscosityModel& base_;
   std::vector<ModelNuisance> free_;
-  std::size_t fixed_index_ = 0;
+  std::string fixed_name_;
   double fixed_value_ = 0.0;
 };
 

@@ -11,8 +11,9 @@
 namespace rbcal::surrogate {
 
 // Which form a model gives: automatic (exact up to kExactJointCovarianceLimit points, low rank
-// beyond), or one of the two forced (to compare them).
-enum class CovarianceForm { automatic, exact, low_rank };
+// beyond), one of the two forced (to compare them), or none: each point's own variance only
+// (the diagonal), for point-wise use.
+enum class CovarianceForm { automatic, exact, low_rank, none };
 
 struct JointCovariance {
   Eigen::MatrixXd full;      // n x n, or empty

@@ -91,10 +91,6 @@ std::vector<double> OffsetFamilyModel::weights(double offset) const {
 
 std::vector<ModelNuisance> OffsetFamilyModel::nuisances() const { return {offset_}; }
 
-ViscosityPrediction OffsetFamilyModel::predict(double phi, double capillary_number, double viscosity_ratio) const {
-  return predict_with(phi, capillary_number, viscosity_ratio, {offset_.mean});
-}
-
 OffsetFamilyModel::Boxed OffsetFamilyModel::boxed(const ViscosityPrediction& p) const {
   if (!box_) return {p, p.sd, 0.0};
   Boxed b{with_box_correction(p, box_->mean), 0.0, 0.0};
@@ -104,41 +100,20 @@ OffsetFamilyModel::Boxed OffsetFamilyModel::boxed(const ViscosityPrediction& p) 
   return b;
 }
 
-ViscosityPrediction OffsetFamilyModel::predict_with(double phi, double capillary_number, double viscosity_ratio,
-                                                    const std::vector<double>& values) const {
-  if (values.size() != 1u)
-    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
-                                std::to_string(values.size()));
-  return boxed(predict_at_offset(phi, capillary_number, viscosity_ratio, values[0])).prediction;
-}
-
-std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many(const std::vector<ParameterPoint>& queries) const {
-  return predict_many_with(queries, {offset_.mean});
-}
-
-std::vector<ViscosityPrediction> OffsetFamilyModel::predict_many_with(const std::vector<ParameterPoint>& queries,
-                                                                      const std::vector<double>& values) const {
-  if (values.size() > 1u)
-    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
-                                std::to_string(values.size()));
-  const std::vector<double> w = weights(values.empty() ? offset_.mean : values[0]);
-  std::vector<std::vector<ViscosityPrediction>> member(members_.size());
-  for (std::size_t k = 0; k < members_.size(); ++k)
-    if (w[k] != 0.0) member[k] = members_[k].model->predict_many(queries);
-  std::vector<ViscosityPrediction> out;
-  out.reserve(queries.size());
-  for (std::size_t i = 0; i < queries.size(); ++i)
-    out.push_back(boxed(combined(w, [&](std::size_t k) { return member[k][i]; })).prediction);
-  return out;
-}
-
-JointViscosityPrediction OffsetFamilyModel::predict_joint(const std::vector<ParameterPoint>& queries,
-                                                          const std::vector<double>& values,
-                                                          CovarianceForm form) const {
-  const double offset = values.empty() ? offset_.mean : values.at(0);
-  if (values.size() > 1u)
-    throw std::invalid_argument("offset family: expected 1 nuisance value (the offset), got " +
-                                std::to_string(values.size()));
+JointViscosityPrediction OffsetFamilyModel::joint_prediction(const std::vector<ParameterPoint>& queries,
+                                                            const NuisanceValues& values, CovarianceForm form) const {
+  const double offset = values.value_or_mean(offset_);
+  if (form == CovarianceForm::none) {
+    const std::vector<double> w = weights(offset);
+    std::vector<std::vector<ViscosityPrediction>> member(members_.size());
+    for (std::size_t k = 0; k < members_.size(); ++k)
+      if (w[k] != 0.0) member[k] = members_[k].model->predict_many(queries);
+    std::vector<ViscosityPrediction> points;
+    points.reserve(queries.size());
+    for (std::size_t i = 0; i < queries.size(); ++i)
+      points.push_back(boxed(combined(w, [&](std::size_t k) { return member[k][i]; })).prediction);
+    return without_correlation(std::move(points));
+  }
   JointViscosityPrediction out;
   const auto n = static_cast<Eigen::Index>(queries.size());
   // The bracketing members' correlations, weighted linearly in c.

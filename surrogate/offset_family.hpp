@@ -57,16 +57,6 @@ class OffsetFamilyModel final : public ViscosityModel {
   OffsetFamilyModel(std::vector<OffsetFamilyMember> members, double prior_mean, double prior_sd,
                     std::optional<BoxCorrectionPrior> box = std::nullopt);
 
-  ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
-  // values: c (beta is at its mean: see above).
-  ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
-                                   const std::vector<double>& values) const override;
-  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
-                                         const std::vector<double>& values,
-                                         CovarianceForm form = CovarianceForm::automatic) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
-  std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
-                                                     const std::vector<double>& values) const override;
   // The intersection of the members' ranges.
   ParameterRange range() const override { return range_; }
   std::vector<ModelNuisance> nuisances() const override;
@@ -81,6 +71,10 @@ class OffsetFamilyModel final : public ViscosityModel {
   std::vector<double> weights(double offset) const;
 
  private:
+  // Nuisance "offset_c" (beta is at its mean: see above); members asked once each, jointly
+  // where their correlation is needed.
+  JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& queries, const NuisanceValues& values,
+                                            CovarianceForm form) const override;
   // A prediction at the box correction's mean, its sd with beta's share (sd_without_box without
   // it), and d eta / d beta.
   struct Boxed {

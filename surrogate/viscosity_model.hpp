@@ -4,7 +4,12 @@
 // The Gaussian-process surrogate implements it; tests implement it with known
 // analytic functions. All quantities are dimensionless (docs/reference.md).
 
+#include <algorithm>
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,6 +53,13 @@ struct JointViscosityPrediction {
   JointCovariance covariance;  // of the eta_re errors
 };
 
+// Predictions whose errors are independent: the covariance is the diagonal of each sd^2.
+inline JointViscosityPrediction without_correlation(std::vector<ViscosityPrediction> points) {
+  Eigen::VectorXd variances(static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) variances(static_cast<Eigen::Index>(i)) = points[i].sd * points[i].sd;
+  return {std::move(points), JointCovariance::diagonal_only(std::move(variances))};
+}
+
 // Up to this many points a surrogate gives its joint covariance exactly, as one n x n matrix;
 // beyond, as a diagonal plus a low-rank factor (joint_covariance.hpp), whose likelihood costs
 // O(n r^2) instead of O(n^3).
@@ -65,59 +77,101 @@ struct ModelNuisance {
   double min = 0.0, max = 0.0;
 };
 
+// Values of a model's nuisance parameters, by name (ModelNuisance::name). A nuisance not named
+// is taken at its prior mean; a name the model does not have is an error.
+class NuisanceValues {
+ public:
+  NuisanceValues() = default;
+  NuisanceValues(std::initializer_list<std::pair<std::string, double>> values) : values_(values) {}
+  // values[k] for nuisances[k]: a parameter vector in the model's order, named.
+  NuisanceValues(const std::vector<ModelNuisance>& nuisances, const std::vector<double>& values) {
+    if (values.size() != nuisances.size())
+      throw std::invalid_argument("nuisance values: " + std::to_string(values.size()) + " values for " +
+                                  std::to_string(nuisances.size()) + " nuisance parameters");
+    for (std::size_t k = 0; k < values.size(); ++k) values_.emplace_back(nuisances[k].name, values[k]);
+  }
+  // Sets (or replaces) one value.
+  void set(const std::string& name, double value) {
+    for (auto& [n, v] : values_)
+      if (n == name) {
+        v = value;
+        return;
+      }
+    values_.emplace_back(name, value);
+  }
+  std::optional<double> find(const std::string& name) const {
+    for (const auto& [n, v] : values_)
+      if (n == name) return v;
+    return std::nullopt;
+  }
+  // The value given for the nuisance, else its prior mean.
+  double value_or_mean(const ModelNuisance& nuisance) const { return find(nuisance.name).value_or(nuisance.mean); }
+  bool empty() const { return values_.empty(); }
+  const std::vector<std::pair<std::string, double>>& entries() const { return values_; }
+
+ private:
+  std::vector<std::pair<std::string, double>> values_;
+};
+
 class ViscosityModel {
  public:
   virtual ~ViscosityModel() = default;
-  // phi: volume fraction, capillary_number: Ca = eta0 gamma_dot a / G_s, viscosity_ratio: lambda = eta1 / eta0.
-  // A model with nuisance parameters predicts at their prior means here.
-  virtual ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const = 0;
   virtual ParameterRange range() const = 0;
-  // predict at each query (a model may batch them: the same numbers, faster).
-  virtual std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const {
-    std::vector<ViscosityPrediction> out;
-    out.reserve(queries.size());
-    for (const ParameterPoint& q : queries) out.push_back(predict(q.phi, q.capillary_number, q.viscosity_ratio));
-    return out;
-  }
-
-  // The model's nuisance parameters (none for a plain surrogate), and its prediction at given
-  // values of them (one per nuisances(), in that order; predict() uses their means).
+  // The model's nuisance parameters (none for a plain surrogate).
   virtual std::vector<ModelNuisance> nuisances() const { return {}; }
-  virtual ViscosityPrediction predict_with(double phi, double capillary_number, double viscosity_ratio,
-                                           const std::vector<double>& /*nuisance_values*/) const {
-    return predict(phi, capillary_number, viscosity_ratio);
+
+  // The one question a model answers: eta_re at each point (phi: volume fraction, Ca =
+  // eta0 gamma_dot a / G_s, lambda = eta1 / eta0) at the given nuisance values, with the joint
+  // covariance of its errors there. The errors of a surrogate at neighbouring points are not
+  // independent: the same runs inform both, and a systematic error common to every run moves
+  // all points together; a likelihood that treats them as independent lets them average away
+  // over a sample's points. CovarianceForm::none asks for each point's own sd only (the
+  // covariance is then its diagonal), the cheap answer for point-wise use.
+  // Throws std::invalid_argument for a nuisance name the model does not have.
+  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& points, const NuisanceValues& nuisances = {},
+                                         CovarianceForm form = CovarianceForm::automatic) const {
+    check_names(nuisances);
+    return joint_prediction(points, nuisances, form);
   }
-  // predict_with at each query (empty values: predict_many); a model may batch them.
-  virtual std::vector<ViscosityPrediction> predict_many_with(const std::vector<ParameterPoint>& queries,
-                                                             const std::vector<double>& nuisance_values) const {
-    if (nuisance_values.empty()) return predict_many(queries);
-    std::vector<ViscosityPrediction> out;
-    out.reserve(queries.size());
-    for (const ParameterPoint& q : queries)
-      out.push_back(predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
-    return out;
+  // The same question at one point, and at several points without their covariance.
+  ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio,
+                              const NuisanceValues& nuisances = {}) const {
+    return predict_joint({{phi, capillary_number, viscosity_ratio}}, nuisances, CovarianceForm::none).points.front();
+  }
+  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& points,
+                                                const NuisanceValues& nuisances = {}) const {
+    return predict_joint(points, nuisances, CovarianceForm::none).points;
   }
 
-  // The model at several points with the joint covariance of its errors there, at given nuisance
-  // values (empty: their means). The errors of a surrogate at neighbouring points are not
-  // independent: the same runs inform both, and a systematic error common to every run moves all
-  // points together. A likelihood that treats them as independent lets them average away over a
-  // sample's points. This default knows no correlation: the covariance is diagonal.
-  virtual JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
-                                                 const std::vector<double>& nuisance_values,
-                                                 CovarianceForm /*form*/ = CovarianceForm::automatic) const {
-    JointViscosityPrediction out;
-    const auto n = static_cast<Eigen::Index>(queries.size());
-    Eigen::VectorXd variances(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const ParameterPoint& q = queries[static_cast<std::size_t>(i)];
-      out.points.push_back(nuisance_values.empty()
-                               ? predict(q.phi, q.capillary_number, q.viscosity_ratio)
-                               : predict_with(q.phi, q.capillary_number, q.viscosity_ratio, nuisance_values));
-      variances(i) = out.points.back().sd * out.points.back().sd;
-    }
-    out.covariance = JointCovariance::diagonal_only(std::move(variances));
-    return out;
+ private:
+  // What a model implements (names already checked).
+  virtual JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& points,
+                                                    const NuisanceValues& nuisances, CovarianceForm form) const = 0;
+
+  void check_names(const NuisanceValues& values) const {
+    if (values.empty()) return;
+    const std::vector<ModelNuisance> known = nuisances();
+    for (const auto& [name, value] : values.entries())
+      if (std::none_of(known.begin(), known.end(), [&](const ModelNuisance& n) { return n.name == name; }))
+        throw std::invalid_argument("the model has no nuisance parameter '" + name + "'");
+  }
+};
+
+// A model whose errors at different points are independent, asked point by point (analytic
+// laws, test models): the covariance is the diagonal of each point's sd^2.
+class PointwiseViscosityModel : public ViscosityModel {
+ protected:
+  virtual ViscosityPrediction predict_point(double phi, double capillary_number, double viscosity_ratio,
+                                            const NuisanceValues& nuisances) const = 0;
+
+ private:
+  JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& points, const NuisanceValues& nuisances,
+                                            CovarianceForm /*form*/) const override {
+    std::vector<ViscosityPrediction> out;
+    out.reserve(points.size());
+    for (const ParameterPoint& q : points)
+      out.push_back(predict_point(q.phi, q.capillary_number, q.viscosity_ratio, nuisances));
+    return without_correlation(std::move(out));
   }
 };
 

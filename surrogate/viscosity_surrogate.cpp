@@ -156,7 +156,7 @@ ViscosityPrediction ViscositySurrogate::prediction_from(double mean, double vari
   return out;
 }
 
-ViscosityPrediction ViscositySurrogate::predict(double phi, double capillary_number, double viscosity_ratio) const {
+ViscosityPrediction ViscositySurrogate::predict_one(double phi, double capillary_number, double viscosity_ratio) const {
   const Eigen::VectorXd x = input(phi, capillary_number, viscosity_ratio);
   const GaussianProcessPrediction p = process_.predict(x, basis(x), basis_jacobian(x));
   return prediction_from(p.mean, p.variance, p.mean_gradient, phi, capillary_number, viscosity_ratio);
@@ -186,13 +186,14 @@ std::vector<ViscosityPrediction> ViscositySurrogate::predict_rows(const std::vec
   return out;
 }
 
-std::vector<ViscosityPrediction> ViscositySurrogate::predict_many(const std::vector<ParameterPoint>& queries) const {
-  return predict_rows(queries, LatentCovariance::none, nullptr);
-}
-
-JointViscosityPrediction ViscositySurrogate::predict_joint(const std::vector<ParameterPoint>& queries,
-                                                          const std::vector<double>& /*nuisance_values*/,
-                                                          CovarianceForm form) const {
+JointViscosityPrediction ViscositySurrogate::joint_prediction(const std::vector<ParameterPoint>& queries,
+                                                             const NuisanceValues& /*nuisances: none*/,
+                                                             CovarianceForm form) const {
+  if (form == CovarianceForm::none)
+    return without_correlation(
+        queries.size() == 1u
+            ? std::vector{predict_one(queries[0].phi, queries[0].capillary_number, queries[0].viscosity_ratio)}
+            : predict_rows(queries, LatentCovariance::none, nullptr));
   const bool exact = form == CovarianceForm::exact ||
                      (form == CovarianceForm::automatic && queries.size() <= kExactJointCovarianceLimit);
   JointViscosityPrediction out;

@@ -57,14 +57,7 @@ class ViscositySurrogate final : public ViscosityModel {
                      std::string source_library = "", SurrogateFitInfo fit_info = {},
                      double predictive_sd_scale = 1.0);
 
-  ViscosityPrediction predict(double phi, double capillary_number, double viscosity_ratio) const override;
-  std::vector<ViscosityPrediction> predict_many(const std::vector<ParameterPoint>& queries) const override;
   ParameterRange range() const override { return range_; }
-  // Covariance from the process's joint latent covariance of ln eta_re, carried to eta_re by the
-  // delta method as predict's sd is: cov(eta_i, eta_j) = eta_i eta_j cov(y_i, y_j).
-  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& queries,
-                                         const std::vector<double>& nuisance_values,
-                                         CovarianceForm form = CovarianceForm::automatic) const override;
 
   // Latent predictive sd of ln eta_re (= relative sd of eta_re), the sd scale applied.
   double log_viscosity_sd(double phi, double capillary_number, double viscosity_ratio) const;
@@ -97,6 +90,12 @@ class ViscositySurrogate final : public ViscosityModel {
   Eigen::MatrixXd basis_jacobian(const Eigen::VectorXd& x) const;
 
  private:
+  // Covariance from the process's joint latent covariance of ln eta_re, carried to eta_re by the
+  // delta method as each point's sd is: cov(eta_i, eta_j) = eta_i eta_j cov(y_i, y_j). One point
+  // without covariance takes the process's single-point path.
+  JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& queries, const NuisanceValues& nuisances,
+                                            CovarianceForm form) const override;
+  ViscosityPrediction predict_one(double phi, double capillary_number, double viscosity_ratio) const;
   struct Terms {
     bool ca = false, lambda = false;  // which of phi ln Ca, phi ln lambda are in the mean
   };

@@ -1,7 +1,7 @@
 #pragma once
 // The model at a set of points for evenly thinned posterior draws: one batched prediction per
-// draw (the model's predict_many_with), the draws in parallel. What the predictive bands and
-// the posterior predictive check draw their noise around.
+// draw (the model's predict_many at the draw's nuisance values), the draws in parallel. What
+// the predictive bands and the posterior predictive check draw their noise around.
 #include <vector>
 
 #include <Eigen/Dense>

@@ -22,9 +22,9 @@ int main(int argc, char** argv) {
       q.push_back({phi, 1.2e-3 * gd * 3.91e-6 / gs, 5.0});
     }
     auto t0 = std::chrono::steady_clock::now();
-    auto e = model->predict_joint(q, {c}, CovarianceForm::exact);
+    auto e = model->predict_joint(q, {{"offset_c", c}}, CovarianceForm::exact);
     auto t1 = std::chrono::steady_clock::now();
-    auto l = model->predict_joint(q, {c}, CovarianceForm::low_rank);
+    auto l = model->predict_joint(q, {{"offset_c", c}}, CovarianceForm::low_rank);
     auto t2 = std::chrono::steady_clock::now();
     const Eigen::Index n = q.size();
     Eigen::VectorXd noise(n), r(n);

@@ -9,13 +9,14 @@
 
 namespace rbcal::calibration::test_models {
 
-class AnalyticViscosityModel : public surrogate::ViscosityModel {
+class AnalyticViscosityModel : public surrogate::PointwiseViscosityModel {
  public:
   double c0 = 2.0, c1 = 0.3, c2 = 0.1, c3 = 0.0;
   double relative_sd = 0.01;
   surrogate::ParameterRange box{0.02, 0.6, 0.003, 20.0, 0.1, 20.0};
 
-  surrogate::ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+  surrogate::ViscosityPrediction predict_point(double phi, double ca, double lambda,
+                                              const surrogate::NuisanceValues&) const override {
     const double l = std::log(lambda);
     const double alpha = c0 - c1 * std::log(ca) + c2 * l;
     surrogate::ViscosityPrediction p;

@@ -51,7 +51,7 @@ TEST(JointPosterior, LikelihoodCouplesTheSamplesThroughTheModelsSharedErrors) {
 
   const auto boxed = test_models::analytic_offset_family(1.0, 0.75, 0.15, rbcal::surrogate::BoxCorrectionPrior{0.1, 0.05});
   const JointResiduals both = joint_residuals(
-      boxed, {0.8}, kDefaultCellRadius,
+      boxed, {{"offset_c", 0.8}}, kDefaultCellRadius,
       {{&a.points, 0.6e-6, 5.0, a.plasma.eta0, false}, {&b.points, 0.9e-6, 5.0, b.plasma.eta0, false}});
   const Eigen::MatrixXd sigma = both.covariance.dense();
   const std::size_t i = 3, j = a.points.size() + 7;  // a point of each sample

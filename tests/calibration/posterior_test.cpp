@@ -162,7 +162,7 @@ TEST(Posterior, BoxCorrectionIsARankOneErrorCommonToEveryPoint) {
   double quadratic = 0.0, log_det = 0.0, g_d_r = 0.0, g_d_g = 0.0, independent_sum = 0.0;
   for (const auto& x : data) {
     const double ca = capillary_number(eta0, x.shear_rate, kDefaultCellRadius, g_s);
-    const auto p = plain.predict_with(x.phi, ca, 5.0, {offset});
+    const auto p = plain.predict(x.phi, ca, 5.0, {{"offset_c", offset}});
     const double eta = std::pow(p.eta_re, 1.1);          // at beta's mean
     const double sd = 1.1 * eta / p.eta_re * p.sd;       // the chain rule
     const double g = eta * std::log(p.eta_re);           // d eta / d beta

@@ -19,11 +19,11 @@ using namespace rbcal::surrogate;
 namespace {
 
 // A member whose prediction is a known function of its offset: eta_re = f(phi, Ca) + g(c).
-class KnownMember final : public ViscosityModel {
+class KnownMember final : public PointwiseViscosityModel {
  public:
   KnownMember(double offset, double (*g)(double), ParameterRange box = {0.02, 0.6, 0.01, 3.2, 0.1, 10.0})
       : offset_(offset), g_(g), box_(box) {}
-  ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+  ViscosityPrediction predict_point(double phi, double ca, double lambda, const NuisanceValues&) const override {
     ViscosityPrediction p;
     p.eta_re = 1.0 + 2.0 * phi - 0.1 * std::log(ca) + 0.01 * lambda + g_(offset_);
     p.sd = 0.01 + 0.02 * g_(offset_) * g_(offset_);
@@ -45,17 +45,18 @@ class KnownMember final : public ViscosityModel {
 class CorrelatedMember final : public ViscosityModel {
  public:
   explicit CorrelatedMember(double offset) : offset_(offset) {}
-  ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+  ViscosityPrediction point(double phi, double ca, double lambda) const {
     ViscosityPrediction p;
     p.eta_re = std::exp(4.0 * phi * (1.0 + 0.2 * offset_)) * (1.0 - 0.05 * std::log(ca)) + 0.0 * lambda;
     p.sd = 0.02 * p.eta_re * (1.0 + offset_);
     return p;
   }
-  JointViscosityPrediction predict_joint(const std::vector<ParameterPoint>& q, const std::vector<double>& /*nuisance*/,
-                                         CovarianceForm /*form*/ = CovarianceForm::automatic) const override {
+  JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& q, const NuisanceValues& /*nuisance*/,
+                                            CovarianceForm form) const override {
     JointViscosityPrediction out;
     const auto n = static_cast<Eigen::Index>(q.size());
-    for (const auto& x : q) out.points.push_back(predict(x.phi, x.capillary_number, x.viscosity_ratio));
+    for (const auto& x : q) out.points.push_back(point(x.phi, x.capillary_number, x.viscosity_ratio));
+    if (form == CovarianceForm::none) return without_correlation(std::move(out.points));
     out.covariance.full.resize(n, n);
     for (Eigen::Index i = 0; i < n; ++i)
       for (Eigen::Index j = 0; j < n; ++j)
@@ -95,8 +96,8 @@ TEST(OffsetFamily, ReproducesEveryMemberAtItsOffset) {
   EXPECT_EQ(nuisances[0].name, "offset_c");
   EXPECT_DOUBLE_EQ(nuisances[0].min, 0.45);
   EXPECT_DOUBLE_EQ(nuisances[0].max, 1.05);
-  EXPECT_EQ(f.predict_with(0.3, 0.5, 5.0, {0.9}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.9).eta_re);
-  EXPECT_THROW(f.predict_with(0.3, 0.5, 5.0, {0.9, 0.1}), std::invalid_argument);
+  EXPECT_EQ(f.predict(0.3, 0.5, 5.0, {{"offset_c", 0.9}}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.9).eta_re);
+  EXPECT_THROW(f.predict(0.3, 0.5, 5.0, {{"offset_c", 0.9}, {"box", 0.1}}), std::invalid_argument);
 }
 
 TEST(OffsetFamily, IsExactForPredictionsLinearInTheOffset) {
@@ -157,18 +158,18 @@ TEST(OffsetFamily, BoxCorrectionCarriesSdAndDerivativesByTheChainRule) {
   EXPECT_EQ(with_box_correction(p, 0.0).eta_re, 3.0);
 }
 
-// The batched predictions (predict_many, predict_many_with, used by the predictive check and
-// bands) are the point-by-point ones, box correction included, at the prior mean and elsewhere.
+// The batched predictions (predict_many, used by the predictive check and bands) are the
+// point-by-point ones, box correction included, at the prior mean and elsewhere.
 TEST(OffsetFamily, BatchedPredictionsArePointByPointOnes) {
   std::vector<OffsetFamilyMember> members;
   for (double c : {0.45, 0.6, 0.75, 0.9, 1.05}) members.push_back({c, std::make_shared<KnownMember>(c, curved)});
   const OffsetFamilyModel f(members, 0.75, 0.15, BoxCorrectionPrior{0.1, 0.07});
   const std::vector<ParameterPoint> q = {{0.1, 0.1, 5.0}, {0.25, 0.5, 2.0}, {0.45, 2.0, 8.0}};
   for (double c : {0.5, 0.75, 0.97}) {
-    const std::vector<ViscosityPrediction> many = f.predict_many_with(q, {c});
+    const std::vector<ViscosityPrediction> many = f.predict_many(q, {{"offset_c", c}});
     ASSERT_EQ(many.size(), q.size());
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const ViscosityPrediction one = f.predict_with(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio, {c});
+      const ViscosityPrediction one = f.predict(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio, {{"offset_c", c}});
       EXPECT_DOUBLE_EQ(many[i].eta_re, one.eta_re) << c << " " << i;
       EXPECT_DOUBLE_EQ(many[i].sd, one.sd);
       EXPECT_DOUBLE_EQ(many[i].d_ln_ca, one.d_ln_ca);
@@ -177,7 +178,8 @@ TEST(OffsetFamily, BatchedPredictionsArePointByPointOnes) {
   const std::vector<ViscosityPrediction> at_mean = f.predict_many(q);
   for (std::size_t i = 0; i < q.size(); ++i)
     EXPECT_DOUBLE_EQ(at_mean[i].eta_re, f.predict(q[i].phi, q[i].capillary_number, q[i].viscosity_ratio).eta_re);
-  EXPECT_THROW(f.predict_many_with(q, {0.6, 0.1}), std::invalid_argument);  // one nuisance only
+  // The offset is its only nuisance.
+  EXPECT_THROW(f.predict_many(q, {{"offset_c", 0.6}, {"box", 0.1}}), std::invalid_argument);
 }
 
 // The joint covariance: each point's sd as predict gives it, correlated as the bracketing
@@ -197,12 +199,12 @@ TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryP
   for (double c : {0.75, 0.6}) {
     const double t = c == 0.75 ? 0.0 : 0.4;  // 0.6 lies 40 % of the way from 0.5 to 0.75
     const std::size_t lower = c == 0.75 ? 1 : 0;
-    const Eigen::MatrixXd p_covariance = plain.predict_joint(q, {c}).covariance.dense();
-    const Eigen::MatrixXd b_covariance = boxed.predict_joint(q, {c}).covariance.dense();
-    const JointViscosityPrediction p = plain.predict_joint(q, {c});
+    const Eigen::MatrixXd p_covariance = plain.predict_joint(q, {{"offset_c", c}}).covariance.dense();
+    const Eigen::MatrixXd b_covariance = boxed.predict_joint(q, {{"offset_c", c}}).covariance.dense();
+    const JointViscosityPrediction p = plain.predict_joint(q, {{"offset_c", c}});
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const ViscosityPrediction single = plain.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
-      const ViscosityPrediction single_boxed = boxed.predict_with(q[i].phi, q[i].capillary_number, 5.0, {c});
+      const ViscosityPrediction single = plain.predict(q[i].phi, q[i].capillary_number, 5.0, {{"offset_c", c}});
+      const ViscosityPrediction single_boxed = boxed.predict(q[i].phi, q[i].capillary_number, 5.0, {{"offset_c", c}});
       EXPECT_EQ(p.points[i].eta_re, single.eta_re);
       EXPECT_NEAR(p_covariance(i, i), single.sd * single.sd, 1e-15);
       EXPECT_NEAR(b_covariance(i, i), single_boxed.sd * single_boxed.sd, 1e-13);  // the diagonal is predict's sd^2
@@ -294,8 +296,8 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
   EXPECT_NEAR(at_mean.sd,
               std::hypot(1.05 * at_mean.eta_re / plain.eta_re * plain.sd, 0.04 * at_mean.eta_re * std::log(plain.eta_re)),
               1e-12);
-  EXPECT_EQ(boxed.predict_with(0.25, 0.2, 5.0, {0.6}).eta_re,
-            boxed.predict_joint({{0.25, 0.2, 5.0}}, {0.6}).points[0].eta_re);
+  EXPECT_EQ(boxed.predict(0.25, 0.2, 5.0, {{"offset_c", 0.6}}).eta_re,
+            boxed.predict_joint({{0.25, 0.2, 5.0}}, {{"offset_c", 0.6}}).points[0].eta_re);
 
   // A bad field inside a member is named with the member's path.
   nlohmann::json j = rbcal::formats::read_json_file(dir / "family.json");
@@ -335,13 +337,13 @@ TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
   const FixedNuisanceModel held(f, "offset_c", 0.6);
   EXPECT_TRUE(held.nuisances().empty());
   EXPECT_EQ(held.predict(0.3, 0.5, 5.0).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
-  EXPECT_EQ(held.predict_with(0.3, 0.5, 5.0, {}).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
+  EXPECT_EQ(held.predict(0.3, 0.5, 5.0).eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
   const std::vector<ParameterPoint> q = {{0.2, 0.5, 5.0}, {0.3, 0.5, 5.0}};
-  const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {0.6});
+  const JointViscosityPrediction a = held.predict_joint(q, {}), b = f.predict_joint(q, {{"offset_c", 0.6}});
   EXPECT_EQ(a.points[1].eta_re, b.points[1].eta_re);
   EXPECT_EQ(a.covariance.dense()(0, 1), b.covariance.dense()(0, 1));
   EXPECT_EQ(held.predict_many(q)[1].eta_re, f.predict_at_offset(0.3, 0.5, 5.0, 0.6).eta_re);
-  EXPECT_EQ(held.predict_many_with(q, {})[0].eta_re, f.predict_at_offset(0.2, 0.5, 5.0, 0.6).eta_re);
+  EXPECT_EQ(held.predict_many(q)[0].eta_re, f.predict_at_offset(0.2, 0.5, 5.0, 0.6).eta_re);
   EXPECT_THROW(FixedNuisanceModel(f, "offset_c", 1.2), std::invalid_argument);  // outside 0.45 .. 1.05
   EXPECT_THROW(FixedNuisanceModel(f, "beta", 0.1), std::invalid_argument);      // no such nuisance here
 }

@@ -121,8 +121,8 @@ TEST(ShippedSurrogateFamily, LowRankLikelihoodIsTheExactOne) {
   };
   for (const double offset : {0.75, 0.62}) {
     const std::vector<ParameterPoint> queries = sample(75);
-    const JointViscosityPrediction exact = family.predict_joint(queries, {offset}, CovarianceForm::exact);
-    const JointViscosityPrediction low = family.predict_joint(queries, {offset}, CovarianceForm::low_rank);
+    const JointViscosityPrediction exact = family.predict_joint(queries, {{"offset_c", offset}}, CovarianceForm::exact);
+    const JointViscosityPrediction low = family.predict_joint(queries, {{"offset_c", offset}}, CovarianceForm::low_rank);
     ASSERT_TRUE(exact.covariance.dense_is_cheaper());
     ASSERT_FALSE(low.covariance.dense_is_cheaper());
     const auto n = static_cast<Eigen::Index>(queries.size());
@@ -136,7 +136,7 @@ TEST(ShippedSurrogateFamily, LowRankLikelihoodIsTheExactOne) {
     const Eigen::MatrixXd l = low.covariance.dense() + Eigen::MatrixXd(noise.asDiagonal());
     EXPECT_NEAR(log_likelihood(l, r), log_likelihood(e, r), 0.01) << "offset " << offset;
     // Its rank is set by the span of the points in length scales: twice the points, hardly more.
-    const Eigen::Index rank_twice = family.predict_joint(sample(150), {offset}, CovarianceForm::low_rank).covariance.rank();
+    const Eigen::Index rank_twice = family.predict_joint(sample(150), {{"offset_c", offset}}, CovarianceForm::low_rank).covariance.rank();
     EXPECT_LE(rank_twice, low.covariance.rank() + low.covariance.rank() / 10) << "offset " << offset;
   }
 }

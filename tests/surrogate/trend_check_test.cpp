@@ -13,12 +13,12 @@ using namespace rbcal::surrogate;
 namespace {
 
 // ln eta_re = phi (a - 0.3 ln Ca); with `dent`, eta_re falls with phi above phi 0.45 at Ca < 0.02.
-class TrendModel : public ViscosityModel {
+class TrendModel : public PointwiseViscosityModel {
  public:
   double a = 2.5;
   bool dent = false;
   bool flat_dense = false;  // above phi 0.48, eta_re rises with Ca by 0.1 % per step (sd 1 %)
-  ViscosityPrediction predict(double phi, double ca, double lambda) const override {
+  ViscosityPrediction predict_point(double phi, double ca, double lambda, const NuisanceValues&) const override {
     ViscosityPrediction p;
     if (flat_dense && phi > 0.48) {
       p.eta_re = std::exp(phi * a) * (1.0 + 1e-3 * std::log(ca / 0.01) / std::log(3.2 / 0.01) * 10.0);
