@@ -39,7 +39,7 @@ void add_model_command(CLI::App& app) {
   CLI::App* build = model->add_subcommand(
       "build",
       "Runs -> effective volume fraction -> surrogate, family of offsets and box correction, as the recipe says "
-      "(docs/library.md, \"Building the model\"): OUT/surrogate.json, OUT/surrogate_family.json, "
+      "(docs/library.md, \"Build.\"): OUT/surrogate.json, OUT/surrogate_family.json, "
       "OUT/build_report.txt; exit 1 when the trend check fails");
   build->add_option("recipe", o->recipe, "Recipe file (rbcal.model_recipe/1; data/library/default/recipe.json is the "
                                          "shipped model's)")

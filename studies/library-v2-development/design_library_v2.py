@@ -10,7 +10,7 @@ kb_hat 0.0078, box 6a x 8a x 6a, tau_out 1, Euler, indicator tolerance 0.1, coup
 interval 2 (shown equivalent to 1 on two dense cases), gamma_dot t to 40 with the window
 [15, 40]. Re 0.2, lowered where G_s in lattice units times the coupling interval would
 exceed 0.05 min(1, (1 + lambda) / 2) (the stability cap of the v1 library,
-docs/library.md "Time-step limit").
+studies/library-history/README.md, "Time-step limit").
 
 The gap tier (n8_h16, from 2026-11-24): every point at phi >=
 ROUND2_PHI again at N_a 8 in a 16a gap (box 6a x 16a x 6a), where the 8a box's layers

@@ -50,7 +50,8 @@ Viscosity run_planned(const std::string& id) {
             << v.eta_re / s - 1.0 << "\n";
   // The same code gives the same numbers on the same machine; -march=native builds on another
   // CPU may round differently and the chaotic suspension then drifts apart. 5 % is several
-  // times the half-window differences measured in docs/library.md for Ca >= 0.1.
+  // times the half-window differences measured for the first library at Ca >= 0.1
+  // (studies/library-history/README.md, "The full library").
   EXPECT_NEAR(v.eta_re / s, 1.0, 0.05) << id << " differs from the shipped library case";
   done[id] = v;
   return v;
