@@ -8,7 +8,9 @@
 #   python       <- calibration, surrogate, formats  (the Python module: no solver)
 # and each module's detail/ folders (at any depth: solver/simulation/detail/) are its own: no
 # other module includes from them, and no public header of the module itself does (a public
-# header that did would hand it on). Tests may.
+# header that did would hand it on). Tests may. No library exports an include directory
+# (target_include_directories ... PUBLIC or INTERFACE): the repository root is every target's
+# own, set once for the tree.
 # Run as: cmake -DSOURCE_DIR=... -P check_layering.cmake; fails naming file and include.
 cmake_minimum_required(VERSION 3.22)
 set(allowed_formats formats rbcal)
@@ -39,6 +41,16 @@ foreach(module formats solver surrogate calibration bench cli python)
       endif()
     endforeach()
   endforeach()
+endforeach()
+file(GLOB_RECURSE build_files "${SOURCE_DIR}/*/CMakeLists.txt")
+list(FILTER build_files EXCLUDE REGEX "/build[^/]*/")
+foreach(build_file IN LISTS build_files)
+  file(READ "${build_file}" text)
+  string(REGEX MATCHALL "target_include_directories\\([^)]*(PUBLIC|INTERFACE)[^)]*\\)" exported "${text}")
+  if(exported)
+    file(RELATIVE_PATH shown "${SOURCE_DIR}" "${build_file}")
+    string(APPEND violations "\n  ${shown}: ${exported} (an exported include directory)")
+  endif()
 endforeach()
 if(violations)
   message(FATAL_ERROR "layering violated:${violations}")
