@@ -13,13 +13,14 @@
 #include <sstream>
 #include <tuple>
 
+#include "formats/units.hpp"
+
 namespace rbcal::calibration {
 
 namespace {
 
 constexpr std::array<const char*, 7> kColumns = {"sample", "kind", "phi", "shear_rate_per_s",
                                                  "viscosity_mPa_s", "sd_mPa_s", "n"};
-constexpr double kPascalSecondsPerMilli = 1e-3;
 
 std::string trim(const std::string& s) {
   const auto first = s.find_first_not_of(" \t\r");
@@ -155,9 +156,9 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
     if (assumed && row.shear_rate != 0.0)
       reader.fail(kShearRate, "a plasma_assumed row has no shear rate: write 0");
     if (!assumed && !(row.shear_rate > 0.0)) reader.fail(kShearRate, "shear rate must be positive");
-    row.viscosity = reader.number(kViscosity) * kPascalSecondsPerMilli;
+    row.viscosity = reader.number(kViscosity) / kMilli;
     if (!(row.viscosity > 0.0)) reader.fail(kViscosity, "viscosity must be positive");
-    row.viscosity_sd = reader.number(kSd) * kPascalSecondsPerMilli;
+    row.viscosity_sd = reader.number(kSd) / kMilli;
     if (row.viscosity_sd < 0.0) reader.fail(kSd, "standard deviation must not be negative");
     if (assumed && !(row.viscosity_sd > 0.0))
       reader.fail(kSd, "an assumed plasma viscosity needs its standard deviation (> 0)");
@@ -205,7 +206,7 @@ void write_rheometer_csv(const RheometerData& data, std::ostream& out) {
                        : row.kind == MeasurementKind::plasma_assumed ? "plasma_assumed"
                                                                      : "suspension";
     out << row.sample << ',' << kind << ',' << row.phi << ',' << row.shear_rate << ','
-        << row.viscosity / kPascalSecondsPerMilli << ',' << row.viscosity_sd / kPascalSecondsPerMilli << ','
+        << row.viscosity * kMilli << ',' << row.viscosity_sd * kMilli << ','
         << row.repeats << '\n';
   }
 }
