@@ -28,21 +28,24 @@ RecoveryCase case_from(const SampleReport& r, double truth, std::uint64_t seed) 
   c.seed = seed;
   c.warnings = r.warnings;
   if (r.alpha && r.alpha->shear_modulus.count > 0) c.alpha = r.alpha->shear_modulus.mean;
-  if (r.direct) c.direct = recovered(r.direct->shear_modulus, r.direct->shear_modulus_interval, truth);
-  if (r.mcmc) c.mcmc = recovered(r.mcmc->shear_modulus_median, r.mcmc->shear_modulus_interval, truth);
+  const bool direct_scored = r.direct && r.direct->model_edge == ModelEdge::none && r.direct->covariance_ok;
+  if (direct_scored) c.direct = recovered(r.direct->shear_modulus, r.direct->shear_modulus_interval, truth);
+  if (r.mcmc && r.mcmc->start_fit.model_edge == ModelEdge::none)
+    c.mcmc = recovered(r.mcmc->shear_modulus_median, r.mcmc->shear_modulus_interval, truth);
   if (r.mcmc)
     c.nuisances = r.mcmc->nuisances;
   else if (r.direct)
     c.nuisances = r.direct->nuisances;
-  if (c.direct && c.mcmc) c.methods_agree = overlap(c.direct->interval, c.mcmc->interval);
-  for (const auto* v : {&c.direct, &c.mcmc})
-    if (c.alpha && *v) c.methods_agree = c.methods_agree && inside(*c.alpha, (*v)->interval);
+  if (c.direct && c.mcmc)
+    c.methods_agree = overlap(c.direct->interval, c.mcmc->interval) &&
+                      (!c.alpha || (inside(*c.alpha, c.direct->interval) && inside(*c.alpha, c.mcmc->interval)));
   return c;
 }
 
 MethodCoverage coverage_of(const std::string& name, const std::vector<RecoveryCase>& cases,
                            std::optional<RecoveredValue> RecoveryCase::*member) {
   MethodCoverage m{name};
+  m.asked = static_cast<int>(cases.size());
   std::vector<double> widths;
   double sum_ln_ratio = 0.0;
   for (const RecoveryCase& c : cases) {
@@ -123,16 +126,14 @@ RecoveryReport recover_known_shear_moduli(const std::vector<SimulatedViscosity>&
       const RecoveryCase& c = report.cases.back();
       log << "G_s " << truth * kMicro << " uN/m, seed " << c.seed << ": alpha " << shown_value(c.alpha)
           << "; direct " << shown_value(c.direct) << "; mcmc " << shown_value(c.mcmc)
-          << (c.methods_agree ? "" : "; methods disagree");
+          << (c.methods_agree || !(o.job.runs("direct") && o.job.runs("mcmc")) ? "" : "; methods disagree");
       for (const NuisanceEstimate& n : c.nuisances) log << "; " << n.prior.name << " " << n.value;
       log << "\n"
           << std::flush;
     }
   }
-  for (const auto& [name, member] : {std::pair{"direct", &RecoveryCase::direct}, std::pair{"mcmc", &RecoveryCase::mcmc}}) {
-    MethodCoverage m = coverage_of(name, report.cases, member);
-    if (m.answered > 0) report.coverage.push_back(m);
-  }
+  for (const auto& [name, member] : {std::pair{"direct", &RecoveryCase::direct}, std::pair{"mcmc", &RecoveryCase::mcmc}})
+    if (o.job.runs(name)) report.coverage.push_back(coverage_of(name, report.cases, member));
   report.methods_agree = static_cast<int>(
       std::count_if(report.cases.begin(), report.cases.end(), [](const RecoveryCase& c) { return c.methods_agree; }));
   return report;
@@ -151,7 +152,7 @@ nlohmann::json RecoveryReport::to_json() const {
                           {"methods_agree", c.methods_agree},
                           {"warnings", c.warnings}});
   for (const MethodCoverage& m : coverage)
-    j["coverage"][m.method] = {{"answered", m.answered}, {"covered", m.covered}, {"fraction", m.fraction()},
+    j["coverage"][m.method] = {{"answered", m.answered}, {"covered", m.covered}, {"asked", m.asked}, {"fraction", m.fraction()},
                                {"median_width_factor", m.median_width_factor}, {"bias_factor", m.bias_factor}};
   j["methods_agree"] = methods_agree;
   j["cases_total"] = cases.size();
@@ -160,15 +161,17 @@ nlohmann::json RecoveryReport::to_json() const {
 
 std::string RecoveryReport::table() const {
   std::ostringstream out;
-  out << "| method | truth inside its 95 % interval | median width (upper / lower) | estimate / truth (geometric "
-         "mean) |\n|---|---|---|---|\n";
+  out << "| method | truth inside its 95 % interval | no interval | median width (upper / lower) | estimate / truth "
+         "(geometric mean) |\n|---|---|---|---|---|\n";
   char buf[160];
   for (const MethodCoverage& m : coverage) {
-    std::snprintf(buf, sizeof buf, "| %s | %d of %d (%.0f %%) | %.2f | %.2f |\n", m.method.c_str(), m.covered,
-                  m.answered, 100.0 * m.fraction(), m.median_width_factor, m.bias_factor);
+    std::snprintf(buf, sizeof buf, "| %s | %d of %d (%.0f %%) | %d | %.2f | %.2f |\n", m.method.c_str(), m.covered,
+                  m.asked, 100.0 * m.fraction(), m.asked - m.answered, m.median_width_factor, m.bias_factor);
     out << buf;
   }
-  out << "methods agree (direct and MCMC intervals overlap, alpha's estimate inside both) in " << methods_agree << " of " << cases.size() << " cases\n";
+  if (coverage.size() == 2)
+    out << "methods agree (direct and MCMC intervals overlap, alpha's estimate inside both) in " << methods_agree
+        << " of " << cases.size() << " cases\n";
   return out.str();
 }
 

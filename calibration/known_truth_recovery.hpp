@@ -27,6 +27,9 @@ struct RecoveryOptions {
     o.min_shear_rate = 0.0;         // simulated suspensions do not aggregate
     o.report.plots = false;
     o.saved_draws = 1;              // no posterior file is written
+    // Every reading of a synthetic sample is kept: its noise, not the blood, would put a point
+    // below the next lower hematocrit's curve.
+    o.keep_out_of_hematocrit_order = true;
     return o;
   }();
 };
@@ -44,30 +47,36 @@ struct RecoveryCase {
   // alpha matching's mean over its matches [N/m] (a point estimate: the seed study's method
   // gives no interval); empty when it did not run or matched nothing.
   std::optional<double> alpha;
-  std::optional<RecoveredValue> direct, mcmc;  // empty: the method did not run or failed
+  // Empty: the method did not run, failed, or gave no interval to score (a direct fit held at
+  // the model's Ca edge, whose interval is a limit, or without a covariance; an MCMC started
+  // from such a fit). Such a case counts as a miss.
+  std::optional<RecoveredValue> direct, mcmc;
   // The model's nuisances (the immersed boundary's offset, ...) as the MCMC (else the direct
   // fit) put them: what the model had to assume to meet the sample.
   std::vector<NuisanceEstimate> nuisances;
-  // The direct fit's and the MCMC's intervals overlap, and alpha's estimate lies in both.
-  bool methods_agree = true;
+  // The direct fit's and the MCMC's intervals overlap, and alpha's estimate (when it gave one)
+  // lies in both; false when either interval is missing.
+  bool methods_agree = false;
   std::vector<std::string> warnings;
 };
 
-// Per method over the cases it answered.
+// Per interval method over every case it was asked to answer: a case without an interval
+// counts as a miss.
 struct MethodCoverage {
   std::string method;
+  int asked = 0;
   int answered = 0;
   int covered = 0;
-  double median_width_factor = 0.0;  // median of upper / lower
-  double bias_factor = 1.0;          // geometric mean of estimate / truth
-  double fraction() const { return answered > 0 ? static_cast<double>(covered) / answered : 0.0; }
+  double median_width_factor = 0.0;  // median of upper / lower over the answered cases
+  double bias_factor = 1.0;          // geometric mean of estimate / truth over the answered cases
+  double fraction() const { return asked > 0 ? static_cast<double>(covered) / asked : 0.0; }
 };
 
 struct RecoveryReport {
   std::vector<SimulatedViscosity> points;
   std::vector<RecoveryCase> cases;
-  std::vector<MethodCoverage> coverage;  // direct, mcmc (those that ran)
-  int methods_agree = 0;                 // cases in which the methods agree
+  std::vector<MethodCoverage> coverage;  // direct, mcmc (those the options ask for)
+  int methods_agree = 0;                 // cases in which the methods agree (with both asked for)
   const MethodCoverage* method(const std::string& name) const;
   nlohmann::json to_json() const;
   std::string table() const;  // one line per case and the coverage, for the terminal

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <ostream>
 #include <map>
 #include <sstream>
@@ -200,7 +201,9 @@ RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_na
 void write_rheometer_csv(const RheometerData& data, std::ostream& out) {
   for (const auto& line : data.provenance) out << "# " << line << '\n';
   for (std::size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
-  out << '\n' << std::setprecision(10);
+  // Enough digits that the values read back exactly; the stream's own precision is restored.
+  const std::streamsize precision = out.precision(std::numeric_limits<double>::max_digits10);
+  out << '\n';
   for (const auto& row : data.rows) {
     const char* kind = row.kind == MeasurementKind::plasma           ? "plasma"
                        : row.kind == MeasurementKind::plasma_assumed ? "plasma_assumed"
@@ -209,6 +212,7 @@ void write_rheometer_csv(const RheometerData& data, std::ostream& out) {
         << row.viscosity * kMilli << ',' << row.viscosity_sd * kMilli << ','
         << row.repeats << '\n';
   }
+  out.precision(precision);
 }
 
 }  // namespace rbcal::calibration

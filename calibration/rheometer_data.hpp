@@ -53,7 +53,7 @@ RheometerData read_rheometer_csv(const std::filesystem::path& path);
 RheometerData parse_rheometer_csv(std::istream& in, const std::string& source_name);
 
 // The rows as a CSV that read_rheometer_csv reads back (provenance as `#` lines first;
-// viscosities in mPa s, written with 10 significant digits).
+// viscosities in mPa s, written with the digits that read back exactly).
 void write_rheometer_csv(const RheometerData& data, std::ostream& out);
 
 }  // namespace rbcal::calibration

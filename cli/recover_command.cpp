@@ -41,6 +41,11 @@ struct RecoverOptions {
 // A run's point: eta_re at the volume fraction its thickened cells fill (offset c lattice
 // spacings, as `rbcal library effective-phi` maps it; c 0: the volume fraction as run).
 calibration::SimulatedViscosity simulated_point(const surrogate::LibraryCase& c, double offset) {
+  // A case already moved to the continuum (an effective-volume-fraction or extrapolated
+  // library's) stands for it at its phi: mapping it again would thicken it twice.
+  if (offset > 0.0 && !c.extrapolation_method.empty())
+    throw std::invalid_argument(c.source.string() + ": already moved to the continuum (" + c.extrapolation_method +
+                                "); give the runs as simulated, or --offset 0 to take it at its phi");
   if (offset > 0.0 && c.nodes_per_radius <= 0) throw std::invalid_argument(c.source.string() + ": field numerics.N_a: missing");
   const double g = offset > 0.0 ? volume_ratio_of(cell_terms(c))(offset / c.nodes_per_radius) : 1.0;
   // NAME.result.json (a run's result.json kept under its case's name) is called NAME.
@@ -50,8 +55,20 @@ calibration::SimulatedViscosity simulated_point(const surrogate::LibraryCase& c,
 }
 
 void run_recover(const RecoverOptions& o) {
+  // The report's file is opened first: a bad path fails now, not after the calibrations.
+  std::ofstream out;
+  if (!o.output.empty()) {
+    out.open(o.output);
+    if (!out) throw std::runtime_error("cannot write " + o.output);
+  }
   std::vector<calibration::SimulatedViscosity> points;
   for (const std::string& f : o.runs) points.push_back(simulated_point(surrogate::read_library_case(f), o.offset));
+  // One sample is one suspension: its runs share lambda (the calibration's lambda prior applies).
+  for (const auto& p : points)
+    if (p.viscosity_ratio != points.front().viscosity_ratio)
+      throw std::invalid_argument("runs at lambda " + std::to_string(points.front().viscosity_ratio) + " and " +
+                                  std::to_string(p.viscosity_ratio) + " (" + p.id +
+                                  "): one synthetic sample takes runs at one lambda");
   calibration::RecoveryOptions r;
   r.shear_moduli.clear();
   for (double g : o.shear_moduli_uN) r.shear_moduli.push_back(g / kMicro);
@@ -74,21 +91,29 @@ void run_recover(const RecoverOptions& o) {
   const calibration::RecoveryReport report = calibration::recover_known_shear_moduli(points, *model, r, std::cout);
   std::printf("%s", report.table().c_str());
   if (!o.output.empty()) {
-    std::ofstream out(o.output);
     nlohmann::json j = report.to_json();
     // Relative to the working folder: the record names no path of the machine it ran on.
     j["model"] = std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();
     j["offset"] = o.offset;
+    j["sample"] = {{"plasma_viscosity_mPa_s", o.plasma_viscosity_mPa},
+                   {"plasma_relative_sd", o.plasma_relative_sd},
+                   {"cell_radius_um", o.cell_radius_um},
+                   {"relative_noise", o.noise},
+                   {"first_seed", o.seed}};
+    j["method"] = o.method;
     out << j.dump(1) << '\n';
     if (!out) throw std::runtime_error("cannot write " + o.output);
     std::printf("wrote %s\n", o.output.c_str());
   }
-  if (o.required_coverage > 0.0)
-    for (const char* m : {"direct", "mcmc"})
-      if (const auto* c = report.method(m); c && c->fraction() < o.required_coverage) {
-        std::printf("%s: coverage %.2f below the required %.2f\n", m, c->fraction(), o.required_coverage);
+  if (o.required_coverage > 0.0) {
+    if (report.coverage.empty())
+      throw std::invalid_argument("--require-coverage needs an interval method (--method direct, mcmc or all)");
+    for (const calibration::MethodCoverage& c : report.coverage)
+      if (c.fraction() < o.required_coverage) {
+        std::printf("%s: coverage %.2f below the required %.2f\n", c.method.c_str(), c.fraction(), o.required_coverage);
         throw ExitStatus{1};
       }
+  }
 }
 
 }  // namespace
@@ -116,7 +141,9 @@ void add_recover_command(CLI::App& app) {
       ->capture_default_str()
       ->check(kPositive);
   cmd->add_option("--cell-radius", o->cell_radius_um, "a [um]")->capture_default_str()->check(kPositive);
-  cmd->add_option("--noise", o->noise, "Relative sd of each reading")->capture_default_str()->check(kNonNegative);
+  cmd->add_option("--noise", o->noise, "Relative sd of each reading (at most 0.2: a reading stays positive)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.2));
   cmd->add_option("--seed", o->seed, "Seed of the first sample's noise (then +1 per sample)")->capture_default_str();
   cmd->add_option("--offset", o->offset,
                   "Immersed-boundary offset c [lattice spacings] that maps each run to the volume fraction it stands "
