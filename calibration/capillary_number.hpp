@@ -13,6 +13,12 @@ inline double capillary_number(double plasma_viscosity, double shear_rate, doubl
   return plasma_viscosity * shear_rate * cell_radius / shear_modulus;
 }
 
+// The shear rate at which a cell of modulus G_s meets a given Ca: gamma_dot = Ca G_s / (eta0 a).
+inline double shear_rate_from_capillary_number(double plasma_viscosity, double cell_radius, double shear_modulus,
+                                               double ca) {
+  return ca * shear_modulus / (plasma_viscosity * cell_radius);
+}
+
 // The inverse: G_s = eta0 * gamma_dot * a / Ca (seed study, <G_s> = eta0 gamma_dot <a> / Ca).
 inline double shear_modulus_from_capillary_number(double plasma_viscosity, double shear_rate,
                                                   double cell_radius, double ca) {

@@ -139,7 +139,7 @@ ConsistencyCheck check_consistency(const SampleReport& r, const surrogate::Param
       MethodComparison c{a.name, b.name, a.value, b.value, a.interval, b.interval};
       const double sd = std::hypot(log_sd(a.interval), log_sd(b.interval));
       c.z = sd > 0.0 ? std::abs(std::log(a.value / b.value)) / sd : 0.0;
-      c.overlap = a.interval.lower <= b.interval.upper && b.interval.lower <= a.interval.upper;
+      c.overlap = a.interval.overlaps(b.interval);
       out.comparisons.push_back(c);
     }
   return out;

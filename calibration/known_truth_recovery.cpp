@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "calibration/calibration_input.hpp"
 #include "calibration/calibration_report.hpp"
+#include "calibration/quantiles.hpp"
 #include "formats/units.hpp"
 
 namespace rbcal::calibration {
@@ -16,11 +18,8 @@ namespace rbcal::calibration {
 namespace {
 
 RecoveredValue recovered(double estimate, const Interval& interval, double truth) {
-  return {estimate, interval, interval.lower <= truth && truth <= interval.upper};
+  return {estimate, interval, interval.contains(truth)};
 }
-
-bool overlap(const Interval& a, const Interval& b) { return a.lower <= b.upper && b.lower <= a.upper; }
-bool inside(double x, const Interval& i) { return i.lower <= x && x <= i.upper; }
 
 RecoveryCase case_from(const SampleReport& r, double truth, std::uint64_t seed) {
   RecoveryCase c;
@@ -37,8 +36,8 @@ RecoveryCase case_from(const SampleReport& r, double truth, std::uint64_t seed) 
   else if (r.direct)
     c.nuisances = r.direct->nuisances;
   if (c.direct && c.mcmc)
-    c.methods_agree = overlap(c.direct->interval, c.mcmc->interval) &&
-                      (!c.alpha || (inside(*c.alpha, c.direct->interval) && inside(*c.alpha, c.mcmc->interval)));
+    c.methods_agree = c.direct->interval.overlaps(c.mcmc->interval) &&
+                      (!c.alpha || (c.direct->interval.contains(*c.alpha) && c.mcmc->interval.contains(*c.alpha)));
   return c;
 }
 
@@ -57,11 +56,7 @@ MethodCoverage coverage_of(const std::string& name, const std::vector<RecoveryCa
     if (v->interval.lower > 0.0) widths.push_back(v->interval.upper / v->interval.lower);
   }
   if (m.answered > 0) m.bias_factor = std::exp(sum_ln_ratio / m.answered);
-  if (!widths.empty()) {
-    std::sort(widths.begin(), widths.end());
-    const std::size_t n = widths.size();
-    m.median_width_factor = n % 2 ? widths[n / 2] : 0.5 * (widths[n / 2 - 1] + widths[n / 2]);
-  }
+  if (!widths.empty()) m.median_width_factor = quantile(std::move(widths), 0.5);
   return m;
 }
 
@@ -112,14 +107,14 @@ RecoveryReport recover_known_shear_moduli(const std::vector<SimulatedViscosity>&
   RecoveryReport report;
   report.points = points;
   std::ostringstream quiet;  // the methods' own progress: the case line below says what matters
+  CalibrationJobOptions job = o.job;  // each synthetic sample is the input's only one
+  job.samples.clear();
   for (double truth : o.shear_moduli) {
     for (int r = 0; r < o.replicates; ++r) {
       SyntheticSampleOptions so = o.sample;
       so.shear_modulus = truth;
       so.seed = o.sample.seed + report.cases.size();
       const CalibrationInput input = make_calibration_input(synthetic_rheometer_data(points, so));
-      CalibrationJobOptions job = o.job;
-      job.samples.clear();
       const CalibrationReport calibrated = calibrate_samples(input, model, job, quiet);
       quiet.str("");
       report.cases.push_back(case_from(calibrated.samples.front(), truth, so.seed));

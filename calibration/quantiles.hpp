@@ -12,6 +12,9 @@ struct Interval {
   double lower = 0.0;
   double upper = 0.0;
   double level = 0.95;  // probability content
+
+  bool contains(double x) const { return lower <= x && x <= upper; }  // bounds included
+  bool overlaps(const Interval& other) const { return lower <= other.upper && other.lower <= upper; }
 };
 
 // The central interval [q((1-level)/2), q((1+level)/2)].

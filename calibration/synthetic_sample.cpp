@@ -55,7 +55,8 @@ RheometerData synthetic_rheometer_data(const std::vector<SimulatedViscosity>& po
     row.sample = o.name;
     row.kind = MeasurementKind::suspension;
     row.phi = p.phi;
-    row.shear_rate = p.capillary_number * o.shear_modulus / (o.plasma_viscosity * o.cell_radius);
+    row.shear_rate =
+        shear_rate_from_capillary_number(o.plasma_viscosity, o.cell_radius, o.shear_modulus, p.capillary_number);
     require(seen.emplace(row.phi, row.shear_rate).second, p.id + ": a second point at the same phi and Ca");
     const double truth = o.plasma_viscosity * p.eta_re;
     row.viscosity = truth * (1.0 + o.relative_noise * normal(rng));

@@ -19,3 +19,10 @@ TEST(CapillaryNumber, ScalesAsStated) {
   EXPECT_NEAR(capillary_number(2e-3, 10.0, 4e-6, 1e-6), 2 * base, 1e-15);
   EXPECT_NEAR(capillary_number(1e-3, 10.0, 4e-6, 2e-6), base / 2, 1e-15);
 }
+
+TEST(CapillaryNumber, ShearRateAtACapillaryNumberInvertsIt) {
+  // The seed study's point: Ca 0.4 of a 0.496 uN/m cell in plasma of 1.569 mPa s at a 4 um is 31.6 1/s.
+  EXPECT_NEAR(shear_rate_from_capillary_number(1.569e-3, kDefaultCellRadius, 0.496e-6, 0.4), 31.6, 0.05);
+  const double rate = shear_rate_from_capillary_number(1.2e-3, 4e-6, 2e-6, 0.5);
+  EXPECT_NEAR(capillary_number(1.2e-3, rate, 4e-6, 2e-6), 0.5, 1e-15);
+}
