@@ -16,42 +16,27 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from shipped_family import g, point_parameters
-
-ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-
+from shipped_family import anchor_runs, g, point_parameters
 
 def anchor_rows():
-    """{Ca: [(N_a, phi as run, ln eta, sd of ln eta)]} of the committed anchors (read directly,
-    without the family that shipped_family.py opens)."""
-    import glob
-    import json
-    import re
+    """{Ca: [(N_a, phi as run, ln eta, sd of ln eta)]} of the committed anchors, only the Ca
+    with both resolutions (the others carry no information on c)."""
     rows = {}
-    for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
-        n_a, point = re.match(r"n(\d+)_(.*)\.result\.json", os.path.basename(path)).groups()
-        r = json.load(open(path))["result"]
+    for point, by in anchor_runs().items():
         ca, _ = point_parameters(point)
-        rows.setdefault(ca, []).append((int(n_a), r["phi_actual"], math.log(r["eta_re"]), r["eta_re_sem"] / r["eta_re"]))
-    # Only Ca with both resolutions carry information on c.
+        for n_a, (eta, sem, phi) in by.items():
+            rows.setdefault(ca, []).append((n_a, phi, math.log(eta), sem / eta))
     return {ca: r for ca, r in rows.items() if len({n for n, *_ in r}) > 1}
 
 
 def pair_offsets():
     """[(point, c, c with the ratio moved by +-1 standard error)] under the exponential law."""
-    import glob
-    import json
-    import re
-    runs = {}
-    for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
-        n_a, point = re.match(r"n(\d+)_(.*)\.result\.json", os.path.basename(path)).groups()
-        r = json.load(open(path))["result"]
-        runs.setdefault(point, {})[int(n_a)] = (math.log(r["eta_re"]), r["eta_re_sem"] / r["eta_re"])
     out = []
-    for point, by in sorted(runs.items()):
+    for point, by in sorted(anchor_runs().items()):
         if 8 not in by or 12 not in by:
             continue
-        (y8, s8), (y12, s12) = by[8], by[12]
+        (e8, s8, _), (e12, s12, _) = by[8], by[12]
+        y8, y12, s8, s12 = math.log(e8), math.log(e12), s8 / e8, s12 / e12
         shifted = [solve_ratio((y8 + z * s8) / (y12 - z * s12)) for z in (1.0, -1.0)]
         out.append((point, solve_ratio(y8 / y12), shifted))
     return out
