@@ -44,8 +44,7 @@ struct RecoveredValue {
 struct RecoveryCase {
   double truth = 0.0;  // [N/m]
   std::uint64_t seed = 0;
-  // alpha matching's mean over its matches [N/m] (a point estimate: the seed study's method
-  // gives no interval); empty when it did not run or matched nothing.
+  // alpha matching's mean over its matches [N/m]; empty when it did not run or matched nothing.
   std::optional<double> alpha;
   // Empty: the method did not run, failed, or gave no interval to score (a direct fit held at
   // the model's Ca edge, whose interval is a limit, or without a covariance; an MCMC started
@@ -54,8 +53,10 @@ struct RecoveryCase {
   // The model's nuisances (the immersed boundary's offset, ...) as the MCMC (else the direct
   // fit) put them: what the model had to assume to meet the sample.
   std::vector<NuisanceEstimate> nuisances;
-  // The direct fit's and the MCMC's intervals overlap, and alpha's estimate (when it gave one)
-  // lies in both; false when either interval is missing.
+  // The methods agree as `rbcal calibrate`'s consistency check judges them: every pair of the
+  // methods' 95 % G_s intervals overlaps (alpha's: its mean +- 1.96 standard errors over the
+  // shear rates it matched; consistency_check.hpp). False when the direct fit's or the MCMC's
+  // interval is missing.
   bool methods_agree = false;
   std::vector<std::string> warnings;
 };
