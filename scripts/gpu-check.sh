@@ -3,11 +3,14 @@
 # within SECONDS (default 540): the device tests, `rbcal bench --backend device` on three
 # cases (and the CPU path on the same host's cores), the capsule deformation against the
 # boundary-integral references, two dense library cases against their CPU results, then
-# N_a 12 anchor cases until the time is up. Run from the repository root:
+# anchor cases until the time is up. Run from the repository root:
 #   here:   cmake -S . -B build-cuda -DRBCAL_CUDA=ON -DRBCAL_NATIVE=OFF -DRBCAL_PYTHON=OFF
 #           cmake --build build-cuda --target rbcal device_tests
 #           bash scripts/device-batch.sh pack build-cuda/bin/rbcal build-cuda/bin/device_tests
-#   there:  bash scripts/gpu-check.sh [SECONDS] [ANCHOR_NAME...]
+#   there:  bash scripts/gpu-check.sh [SECONDS] [ANCHOR...]
+# ANCHOR: a case of data/library/anchors/cases/ by name, or any case file by its path. Runs
+# resume from their checkpoints: a run cut off by SECONDS goes on in the next call while the
+# machine is still warm (its files stay under /tmp/gpu-check/runs).
 # Writes OUT/log.txt (everything printed) and OUT/runs.tar.gz (each run's result.json,
 # series.csv and log); OUT defaults to ./gpu-check.out.
 set -u
@@ -20,7 +23,7 @@ out=$(realpath -m "${OUT:-gpu-check.out}")
 mkdir -p "$out"
 here=$(pwd)
 work=/tmp/gpu-check
-rm -rf "$work" && mkdir -p "$work/runs"
+rm -rf "$work/.devrun" && mkdir -p "$work/runs"
 tar xJf .devrun.tar.xz -C "$work" || { echo "no .devrun.tar.xz (scripts/device-batch.sh pack)"; exit 2; }
 # The binaries with the libraries they were built against; the driver's own library from
 # the host (the tool's machines keep it under /usr/local/nvidia).
@@ -43,8 +46,8 @@ simulate() {  # NAME CASE LIMIT
   local name=$1 case=$2 limit=$3
   [ "$(left)" -gt 20 ] || { echo "$name: skipped (no time left)"; return; }
   local t0=$(date +%s)
-  bounded "$limit" "$run" rbcal simulate "$case" --backend device -q -o "$work/runs/$name.out" \
-    > "$work/runs/$name.log" 2>&1
+  bounded "$limit" "$run" rbcal simulate "$case" --backend device -q --resume -o "$work/runs/$name.out" \
+    >> "$work/runs/$name.log" 2>&1
   echo "$name: exit $? after $(( $(date +%s) - t0 )) s"
   grep -E "eta_re|Taylor" "$work/runs/$name.log" | sed 's/^/    /'
 }
@@ -72,7 +75,12 @@ simulate() {  # NAME CASE LIMIT
   for n in phi0.44_Ca2.9_lambda2.58_n8 phi0.26_Ca0.8_lambda5_n8; do simulate "$n" "studies/gpu-path/cases/$n.json" 150; done
   fi
   echo "== anchors"
-  for n in "${anchors[@]}"; do simulate "$n" "data/library/anchors/cases/$n.json" 400; done
+  for a in "${anchors[@]}"; do
+    case "$a" in
+      *.json) simulate "$(basename "$a" .json)" "$a" 600 ;;
+      *) simulate "$a" "data/library/anchors/cases/$a.json" 600 ;;
+    esac
+  done
   echo "== done after $(( $(date +%s) - start )) s"
 } 2>&1 | tee "$out/log.txt"
 (cd "$work/runs" && tar czf "$out/runs.tar.gz" $(ls -d *.log */result.json */series.csv 2>/dev/null))
