@@ -20,6 +20,20 @@ bool same_point(const LibraryCase& a, const LibraryCase& b) {
 
 }  // namespace
 
+BetaSpread spread_of(const std::vector<double>& beta, const std::vector<double>& beta_se) {
+  BetaSpread out;
+  const double n = static_cast<double>(beta.size());
+  if (beta.empty()) return out;
+  double sum = 0.0, se2 = 0.0;
+  for (std::size_t i = 0; i < beta.size(); ++i) sum += beta[i], se2 += beta_se[i] * beta_se[i];
+  out.mean = sum / n;
+  double ss = 0.0;
+  for (double b : beta) ss += (b - out.mean) * (b - out.mean);
+  out.scatter = beta.size() > 1 ? std::sqrt(ss / (n - 1.0)) : 0.0;
+  out.mean_se = std::sqrt(se2) / n;
+  return out;
+}
+
 BoxTwinPrior box_twin_prior(const std::vector<BoxTwinFiles>& pairs) {
   if (pairs.empty()) throw std::invalid_argument("box correction: no twin pairs given");
   BoxTwinPrior p;
@@ -37,14 +51,10 @@ BoxTwinPrior box_twin_prior(const std::vector<BoxTwinFiles>& pairs) {
     t.beta_se = std::hypot(s16 / (e16 * ln8), (1.0 + t.beta) * s8 / (e8 * ln8));
     p.twins.push_back(std::move(t));
   }
-  const double n = static_cast<double>(p.twins.size());
-  double sum = 0.0, se2 = 0.0;
-  for (const BoxTwin& t : p.twins) sum += t.beta, se2 += t.beta_se * t.beta_se;
-  p.mean_beta = sum / n;
-  double ss = 0.0;
-  for (const BoxTwin& t : p.twins) ss += (t.beta - p.mean_beta) * (t.beta - p.mean_beta);
-  p.scatter = p.twins.size() > 1 ? std::sqrt(ss / (n - 1.0)) : 0.0;
-  p.mean_se = std::sqrt(se2) / n;
+  std::vector<double> beta, se;
+  for (const BoxTwin& t : p.twins) beta.push_back(t.beta), se.push_back(t.beta_se);
+  const BetaSpread spread = spread_of(beta, se);
+  p.mean_beta = spread.mean, p.scatter = spread.scatter, p.mean_se = spread.mean_se;
   p.mean = 1.5 * p.mean_beta;
   const double half = 0.5 * p.mean_beta;
   p.sd = std::sqrt(p.scatter * p.scatter + half * half + p.mean_se * p.mean_se);

@@ -27,6 +27,13 @@ struct BoxTwin {
   double beta = 0.0, beta_se = 0.0;
 };
 
+// The mean of several estimates of beta, their scatter (sample sd) and the mean's standard
+// error from the estimates' own standard errors.
+struct BetaSpread {
+  double mean = 0.0, scatter = 0.0, mean_se = 0.0;
+};
+BetaSpread spread_of(const std::vector<double>& beta, const std::vector<double>& beta_se);
+
 struct BoxTwinPrior {
   std::vector<BoxTwin> twins;
   double mean_beta = 0.0, scatter = 0.0, mean_se = 0.0;  // m, s, se_m

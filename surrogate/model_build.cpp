@@ -11,6 +11,7 @@
 #include "formats/library_schema.hpp"
 #include "formats/printf_string.hpp"
 #include "formats/provenance.hpp"
+#include "surrogate/box_anchors.hpp"
 #include "surrogate/box_twins.hpp"
 #include "surrogate/leave_one_out_report.hpp"
 #include "surrogate/mapped_library_file.hpp"
@@ -145,13 +146,29 @@ ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const Vol
       lo = std::min(lo, phi_eff), hi = std::max(hi, phi_eff);
     }
     BoxCorrectionPrior prior{twins.mean, twins.sd};
+    std::string source = printf_string(
+        "%zu twin runs in a box twice the library's height at phi_eff %.2f-%.2f (docs/library.md, The box twins)",
+        twins.twins.size(), lo, hi);
+    if (!recipe.box_anchors.empty()) {
+      std::vector<int> resolutions;
+      for (const SimulationLibrary& t : tiers)
+        for (const LibraryCase& c : t.cases) resolutions.push_back(c.nodes_per_radius);
+      const BoxAnchorPrior anchors = box_anchor_prior(
+          recipe.box_anchors, central,
+          [&](const LibraryCase& r) {
+            return volume_ratio(recipe.mapping.offset_at(r.nodes_per_radius) / r.nodes_per_radius) * r.phi_actual;
+          },
+          resolutions, twins);
+      note("box correction from anchor runs (the model's step to the bigger box):\n" + describe_box_anchors(anchors));
+      prior = {anchors.mean, anchors.sd};
+      source = printf_string(
+          "%zu anchor runs in a box twice the library's height against the model, the step to the bulk from %zu twin "
+          "runs (docs/library.md, The box twins)",
+          anchors.anchors.size(), twins.twins.size());
+    }
     if (recipe.box_decimals)
       prior = {rounded(prior.mean, *recipe.box_decimals), rounded(prior.sd, *recipe.box_decimals)};
-    box = BoxCorrectionRecord{
-        prior, printf_string(
-                   "%zu twin runs in a box twice the library's height at phi_eff %.2f-%.2f (docs/library.md, The box "
-                   "twins)",
-                   twins.twins.size(), lo, hi)};
+    box = BoxCorrectionRecord{prior, source};
   }
 
   // 5. The family.

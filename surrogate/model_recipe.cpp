@@ -36,7 +36,7 @@ ModelRecipe model_recipe_from_json(const nlohmann::json& j, const std::filesyste
   r.only_known_keys("surrogate", {"sd_scale"});
   r.only_known_keys("family", {"offsets", "prior", "shared_hyperparameters", "same_runs"});
   r.only_known_keys("family.prior", {"mean", "sd"});
-  r.only_known_keys("box_correction", {"twins", "decimals"});
+  r.only_known_keys("box_correction", {"twins", "anchors", "decimals"});
   const std::filesystem::path folder = file.parent_path();
   ModelRecipe m;
   m.file = file;
@@ -94,6 +94,12 @@ ModelRecipe model_recipe_from_json(const nlohmann::json& j, const std::filesyste
       r.only_known_keys(at, {"library_box", "bigger_box"});
       m.box_twins.push_back(
           {existing_path(r, at + ".library_box", folder), existing_path(r, at + ".bigger_box", folder)});
+    }
+    if (const nlohmann::json* anchors = r.find("box_correction.anchors")) {
+      if (!anchors->is_array() || anchors->empty())
+        r.fail("box_correction.anchors", "must be a non-empty array of run result files");
+      for (std::size_t i = 0; i < anchors->size(); ++i)
+        m.box_anchors.push_back(existing_path(r, "box_correction.anchors." + std::to_string(i), folder));
     }
     if (r.find("box_correction.decimals")) m.box_decimals = r.integer_or("box_correction.decimals", 3, 0, 12);
   }

@@ -9,7 +9,8 @@
 //    "surrogate": {"sd_scale": "held_out"},            (or a number >= 1; optional)
 //    "family": {"offsets": [0.45, 0.6, 0.75, 0.9, 1.05], "prior": {"mean": 0.75, "sd": 0.15},
 //               "shared_hyperparameters": false, "same_runs": false},
-//    "box_correction": {"twins": [{"library_box": "...", "bigger_box": "..."}], "decimals": 3}}
+//    "box_correction": {"twins": [{"library_box": "...", "bigger_box": "..."}],
+//                       "anchors": ["...", ...], "decimals": 3}}
 // Paths are relative to the recipe's folder. "mapping" is `rbcal library effective-phi`'s
 // options (docs/library.md): the central surrogate is built at "offset", and every member of
 // the family at one of "offsets" (which must hold "offset"). "shared_hyperparameters": the
@@ -17,7 +18,9 @@
 // central surrogate's runs (its phi_max cut), so that they differ only by the mapping.
 // "box_correction" (optional): the prior of the box exponent beta from twin runs
 // (surrogate/box_twins.hpp), its mean and sd rounded to "decimals" (optional; their own
-// uncertainty is several hundredths).
+// uncertainty is several hundredths). "anchors" (optional, with "twins"): result files of runs
+// in the bigger box at one of the library's resolutions; the prior then comes from the model's
+// step to them (surrogate/box_anchors.hpp), the twins giving only the step beyond the bigger box.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -42,6 +45,7 @@ struct ModelRecipe {
   double prior_mean = 0.0, prior_sd = 0.0;
   bool shared_hyperparameters = false, same_runs = false;
   std::vector<BoxTwinFiles> box_twins;  // empty: no box correction
+  std::vector<std::filesystem::path> box_anchors;  // empty: the prior from the twins alone
   std::optional<int> box_decimals;
 };
 

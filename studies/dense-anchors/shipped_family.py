@@ -67,10 +67,28 @@ def first_order_extrapolation(by):
     return (n2 * e2 - n1 * e1) / (n2 - n1), math.hypot(n2 * s2, n1 * s1) / (n2 - n1), n1, n2
 
 
+# The family's predictions are for the bulk: its box correction (beta at its prior mean, ln
+# eta_bulk = (1 + beta) ln eta_8a) is integrated into them. The anchors' 16a gap lies part of
+# the way: the twins measured m = beta / 1.5 from the 8a gap to the 16a one
+# (surrogate/box_twins.hpp), so ln eta_16a = (1 + m) / (1 + beta) ln eta_bulk.
+GAP_EXPONENT = (1.0 + BETA_MEAN / 1.5) / (1.0 + BETA_MEAN)
+
+
+def in_gap(eta_bulk, sd_bulk=0.0):
+    """(eta, sd) in the 16a gap from the family's bulk prediction (sd scaled to first order)."""
+    eta = math.exp(GAP_EXPONENT * math.log(eta_bulk))
+    return eta, GAP_EXPONENT * eta / eta_bulk * sd_bulk
+
+
+def in_library_gap(eta_bulk, sd_bulk=0.0):
+    """(eta, sd) in the library's 8a gap from the family's bulk prediction."""
+    eta = math.exp(math.log(eta_bulk) / (1.0 + BETA_MEAN))
+    return eta, eta / eta_bulk * sd_bulk / (1.0 + BETA_MEAN)
+
+
 def member_in_gap(phi, ca, lam, c):
-    """The member at offset c in the anchors' 16a gap: the box correction at its prior mean,
-    ln eta = (1 + beta) ln eta_bulk."""
-    return math.exp((1.0 + BETA_MEAN) * math.log(member_eta(phi, ca, lam, c)))
+    """The member at offset c in the anchors' 16a gap."""
+    return in_gap(member_eta(phi, ca, lam, c))[0]
 
 
 def point_parameters(point):

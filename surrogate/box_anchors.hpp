@@ -1,0 +1,52 @@
+#pragma once
+// The box correction's prior from anchor runs: runs in a box twice the library's height at a
+// resolution the library has (the dense anchors' N_a 8 tier, data/library/anchors/). At its own
+// resolution a run at phi as run stands for the library's runs at that phi as run, whatever the
+// offset c (the mapping moves both alike), so the model at phi_eff = g_c(N_a) phi_actual predicts
+// what the run would give in the library's box, and
+//     beta = ln eta_run / ln eta_model - 1
+// is the step from the model to the bigger box: the box itself and the model's own error at
+// that point together (the twins of box_twins.hpp see the box alone). For the calibration the
+// sum is what counts. The prior for the bulk adds what lies between the doubled box and the
+// bulk as the twins' rule does (half the twins' mean m, with as much again as its uncertainty):
+//     mean = n + 0.5 m,   sd = sqrt(s^2 + (0.5 m)^2 + se_n^2),
+// n the anchors' mean beta, s their scatter, se_n the mean's standard error from the runs.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "surrogate/box_twins.hpp"
+#include "surrogate/library_case.hpp"
+#include "surrogate/viscosity_model.hpp"
+
+namespace rbcal::surrogate {
+
+struct BoxAnchor {
+  LibraryCase run;
+  double phi_eff = 0.0;       // where the model is asked
+  double model_eta_re = 0.0;  // the model there (the library's box)
+  double beta = 0.0, beta_se = 0.0;
+};
+
+struct BoxAnchorPrior {
+  std::vector<BoxAnchor> anchors;
+  double mean_beta = 0.0, scatter = 0.0, mean_se = 0.0;  // n, s, se_n
+  double twins_mean_beta = 0.0;                         // m
+  double mean = 0.0, sd = 0.0;                          // the prior for the bulk
+};
+
+// The phi_eff at which a run stands (the recipe's mapping at the run's own resolution).
+using EffectivePhi = std::function<double(const LibraryCase&)>;
+
+// Throws std::invalid_argument naming the file when a run cannot be read, when its resolution
+// is not one of `library_resolutions`, when the model does not cover its point, or when no
+// anchor is given.
+BoxAnchorPrior box_anchor_prior(const std::vector<std::filesystem::path>& anchors, const ViscosityModel& model,
+                                const EffectivePhi& phi_eff, const std::vector<int>& library_resolutions,
+                                const BoxTwinPrior& twins);
+
+// One line per anchor (N_a, phi_actual, phi_eff, run, model, beta), then n, s, se_n and the prior.
+std::string describe_box_anchors(const BoxAnchorPrior& prior);
+
+}  // namespace rbcal::surrogate
