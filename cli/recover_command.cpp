@@ -6,11 +6,13 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "formats/units.hpp"
 #include "calibration/known_truth_recovery.hpp"
+#include "formats/json_file.hpp"
+#include "formats/units.hpp"
 #include "cli/cell_thickening.hpp"
 #include "cli/commands.hpp"
 #include "cli/data_folder.hpp"
@@ -32,11 +34,39 @@ struct RecoverOptions {
   double cell_radius_um = 4.0;
   double noise = 0.05;
   unsigned long long seed = 1;
-  double offset = 0.75;
+  std::optional<double> offset;  // empty: the offset the model's runs were mapped with
   std::string method = "all";
   std::string output;
   double required_coverage = 0.0;
 };
+
+// The offset c(N_a) each run is mapped with: --offset for every run, else the model's own
+// mapping (surrogate::recorded_offset), so that a run stands where the model's runs of that
+// resolution stand.
+struct RunOffset {
+  std::optional<double> given;
+  surrogate::RecordedOffset model;
+  double at(int nodes_per_radius) const { return given ? *given : model.at(nodes_per_radius); }
+  std::string describe() const {
+    char buf[128];
+    if (given)
+      std::snprintf(buf, sizeof buf, "offset %g", *given);
+    else
+      std::snprintf(buf, sizeof buf, "the model's offset %g + %g (1/N_a - 1/8)", model.at_n8, model.slope);
+    return buf;
+  }
+};
+
+RunOffset run_offset(const RecoverOptions& o) {
+  RunOffset r{o.offset, {}};
+  if (o.offset) return r;
+  const std::optional<surrogate::RecordedOffset> recorded = surrogate::recorded_offset(formats::read_json_file(o.surrogate));
+  if (!recorded)
+    throw std::invalid_argument(o.surrogate + ": records no offset of its mapping (no family prior, no recipe); give "
+                                "--offset");
+  r.model = *recorded;
+  return r;
+}
 
 // A run's point: eta_re at the volume fraction its thickened cells fill (offset c lattice
 // spacings, as `rbcal library effective-phi` maps it; c 0: the volume fraction as run).
@@ -61,8 +91,12 @@ void run_recover(const RecoverOptions& o) {
     out.open(o.output);
     if (!out) throw std::runtime_error("cannot write " + o.output);
   }
+  const RunOffset offset = run_offset(o);
   std::vector<calibration::SimulatedViscosity> points;
-  for (const std::string& f : o.runs) points.push_back(simulated_point(surrogate::read_library_case(f), o.offset));
+  for (const std::string& f : o.runs) {
+    const surrogate::LibraryCase run = surrogate::read_library_case(f);
+    points.push_back(simulated_point(run, offset.at(run.nodes_per_radius)));
+  }
   // One sample is one suspension: its runs share lambda (the calibration's lambda prior applies).
   for (const auto& p : points)
     if (p.viscosity_ratio != points.front().viscosity_ratio)
@@ -82,8 +116,8 @@ void run_recover(const RecoverOptions& o) {
   r.job.surrogate_file = o.surrogate;
   r.job.setup.cell_radius = r.sample.cell_radius;
   const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
-  std::printf("rbcal recover: %zu runs (phi at offset %g), model %s, %zu true G_s x %d noise draws\n", points.size(),
-              o.offset, o.surrogate.c_str(), r.shear_moduli.size(), r.replicates);
+  std::printf("rbcal recover: %zu runs (phi at %s), model %s, %zu true G_s x %d noise draws\n", points.size(),
+              offset.describe().c_str(), o.surrogate.c_str(), r.shear_moduli.size(), r.replicates);
   for (const auto& p : points)
     std::printf("  %s: phi %.4f, Ca %g, lambda %g, eta_re %.4f +- %.4f\n", p.id.c_str(), p.phi, p.capillary_number,
                 p.viscosity_ratio, p.eta_re, p.eta_re_se);
@@ -94,7 +128,8 @@ void run_recover(const RecoverOptions& o) {
     nlohmann::json j = report.to_json();
     // Relative to the working folder: the record names no path of the machine it ran on.
     j["model"] = std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();
-    j["offset"] = o.offset;
+    j["offset"] = o.offset ? nlohmann::json(*o.offset)
+                           : nlohmann::json{{"at_N_a_8", offset.model.at_n8}, {"slope", offset.model.slope}};
     j["sample"] = {{"plasma_viscosity_mPa_s", o.plasma_viscosity_mPa},
                    {"plasma_relative_sd", o.plasma_relative_sd},
                    {"cell_radius_um", o.cell_radius_um},
@@ -147,8 +182,8 @@ void add_recover_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "Seed of the first sample's noise (then +1 per sample)")->capture_default_str();
   cmd->add_option("--offset", o->offset,
                   "Immersed-boundary offset c [lattice spacings] that maps each run to the volume fraction it stands "
-                  "for (0: the volume fraction as run)")
-      ->capture_default_str()
+                  "for (0: the volume fraction as run); default: the offset the model's runs were mapped with, at "
+                  "each run's N_a")
       ->check(kNonNegative);
   cmd->add_option("--method", o->method, "alpha, direct, mcmc or all")
       ->capture_default_str()

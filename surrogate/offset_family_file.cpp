@@ -80,4 +80,20 @@ std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path
   return std::make_unique<ViscositySurrogate>(surrogate_from_json(j, file.string()));
 }
 
+std::optional<RecordedOffset> recorded_offset(const nlohmann::json& j) {
+  if (!j.is_object()) return std::nullopt;
+  const nlohmann::json mapping = j.contains("provenance") ? j["provenance"].value("recipe", nlohmann::json::object())
+                                                                     .value("mapping", nlohmann::json::object())
+                                                          : nlohmann::json::object();
+  RecordedOffset r;
+  r.slope = mapping.value("offset_slope", 0.0);
+  if (j.value("schema", "") == formats::kSurrogateFamilySchema && j.contains("prior"))
+    r.at_n8 = j["prior"].at("mean").get<double>();
+  else if (mapping.contains("offset"))
+    r.at_n8 = mapping["offset"].get<double>();
+  else
+    return std::nullopt;
+  return r;
+}
+
 }  // namespace rbcal::surrogate

@@ -45,4 +45,14 @@ OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file);
 // A surrogate (rbcal.surrogate/1) or a surrogate family (rbcal.surrogate_family/1), by its schema.
 std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file);
 
+// The offset a model file's runs were mapped with, c(N_a) = at_n8 + slope (1 / N_a - 1 / 8)
+// (effective_volume_fraction.hpp): for a family the prior's mean, for a surrogate its recipe's
+// mapping.offset; the slope from the recipe the file records (0 when it records none).
+struct RecordedOffset {
+  double at_n8 = 0.0, slope = 0.0;
+  double at(int nodes_per_radius) const { return at_n8 + slope * (1.0 / nodes_per_radius - 1.0 / 8.0); }
+};
+// Empty when the file records no offset (a surrogate built without a recipe).
+std::optional<RecordedOffset> recorded_offset(const nlohmann::json& model_file);
+
 }  // namespace rbcal::surrogate

@@ -347,3 +347,27 @@ TEST(FixedNuisance, HoldsTheOffsetWhereItIsGiven) {
   EXPECT_THROW(FixedNuisanceModel(f, "offset_c", 1.2), std::invalid_argument);  // outside 0.45 .. 1.05
   EXPECT_THROW(FixedNuisanceModel(f, "beta", 0.1), std::invalid_argument);      // no such nuisance here
 }
+
+namespace rbcal::surrogate {
+namespace {
+
+// The offset a model file records: a family's prior mean with its recipe's slope, a
+// surrogate's recipe offset; nothing when neither is recorded.
+TEST(RecordedOffset, FromTheFamilysPriorAndTheRecipesSlope) {
+  nlohmann::json family = {{"schema", "rbcal.surrogate_family/1"},
+                           {"prior", {{"mean", 0.652}, {"sd", 0.04}}},
+                           {"provenance", {{"recipe", {{"mapping", {{"offset", 0.652}, {"offset_slope", 1.1}}}}}}}};
+  const auto f = recorded_offset(family);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_DOUBLE_EQ(f->at(8), 0.652);
+  EXPECT_NEAR(f->at(12), 0.652 + 1.1 * (1.0 / 12.0 - 1.0 / 8.0), 1e-15);  // 0.606
+  family["provenance"] = nlohmann::json::object();
+  EXPECT_DOUBLE_EQ(recorded_offset(family)->at(12), 0.652);  // no recipe: slope 0
+  const nlohmann::json surrogate = {{"schema", "rbcal.surrogate/1"},
+                                    {"provenance", {{"recipe", {{"mapping", {{"offset", 0.75}}}}}}}};
+  EXPECT_DOUBLE_EQ(recorded_offset(surrogate)->at(6), 0.75);
+  EXPECT_FALSE(recorded_offset(nlohmann::json{{"schema", "rbcal.surrogate/1"}}).has_value());
+}
+
+}  // namespace
+}  // namespace rbcal::surrogate
