@@ -139,10 +139,13 @@ ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const Vol
   if (!recipe.box_twins.empty()) {
     const BoxTwinPrior twins = box_twin_prior(recipe.box_twins);
     note("box correction from twin runs:\n" + describe_box_twins(twins));
+    // Where a run at its own resolution stands under the recipe's mapping.
+    const auto phi_eff_of = [&](const LibraryCase& r) {
+      return volume_ratio(recipe.mapping.offset_at(r.nodes_per_radius) / r.nodes_per_radius) * r.phi_actual;
+    };
     double lo = 1.0, hi = 0.0;
     for (const BoxTwin& t : twins.twins) {
-      const int n = t.library_box.nodes_per_radius;
-      const double phi_eff = volume_ratio(recipe.mapping.offset_at(n) / n) * t.library_box.phi_actual;
+      const double phi_eff = phi_eff_of(t.library_box);
       lo = std::min(lo, phi_eff), hi = std::max(hi, phi_eff);
     }
     BoxCorrectionPrior prior{twins.mean, twins.sd};
@@ -153,12 +156,7 @@ ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const Vol
       std::vector<int> resolutions;
       for (const SimulationLibrary& t : tiers)
         for (const LibraryCase& c : t.cases) resolutions.push_back(c.nodes_per_radius);
-      const BoxAnchorPrior anchors = box_anchor_prior(
-          recipe.box_anchors, central,
-          [&](const LibraryCase& r) {
-            return volume_ratio(recipe.mapping.offset_at(r.nodes_per_radius) / r.nodes_per_radius) * r.phi_actual;
-          },
-          resolutions, twins);
+      const BoxAnchorPrior anchors = box_anchor_prior(recipe.box_anchors, central, phi_eff_of, resolutions, twins);
       note("box correction from anchor runs (the model's step to the bigger box):\n" + describe_box_anchors(anchors));
       prior = {anchors.mean, anchors.sd};
       source = printf_string(
