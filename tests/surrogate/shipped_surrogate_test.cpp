@@ -75,7 +75,7 @@ TEST(ShippedSurrogate, ShowsThePhysicalTrends) {
 }
 
 // The shipped surrogate family (the calibration's default model) holds the shipped surrogate as
-// its member at the prior mean, c = 0.75 +- 0.15 lattice spacings (docs/library.md, "The effective
+// its member at the prior mean, c = 0.75 +- 0.05 lattice spacings (docs/library.md, "The effective
 // volume fraction"), and its members move as a larger offset must: each run lands at a denser
 // phi_eff, so eta_re at a given phi falls with c (at the acceptance point phi 0.41, Ca 0.8,
 // lambda 5, and on a grid of the dense end).
@@ -84,7 +84,7 @@ TEST(ShippedSurrogateFamily, HoldsTheShippedSurrogateAndFallsWithTheOffset) {
   const ViscositySurrogate shipped = load_surrogate(kLibrary / "surrogate.json");
   const ModelNuisance& prior = family.offset_prior();
   EXPECT_DOUBLE_EQ(prior.mean, 0.75);
-  EXPECT_DOUBLE_EQ(prior.sd, 0.15);
+  EXPECT_DOUBLE_EQ(prior.sd, 0.05);
   EXPECT_LE(prior.min, prior.mean - 2.0 * prior.sd + 1e-12);
   EXPECT_GE(prior.max, prior.mean + 2.0 * prior.sd - 1e-12);
   for (double phi : {0.1, 0.3, 0.5})
