@@ -11,7 +11,9 @@
 // the cell's volume thickened outwards by c lattice spacings. Each run keeps its eta_re
 // and moves to phi_eff; runs at several resolutions land on one continuum surface.
 //
-// Uncertainty: c is known to about +-0.15. Through the exponential law eta_re = exp(alpha
+// Uncertainty: c is known to about +-0.05 (the shipped recipe's sd: the width within which
+// samples of known G_s made from the dense anchors are recovered; +-0.15 before those runs).
+// Through the exponential law eta_re = exp(alpha
 // phi), which holds locally for these suspensions, an error s_g in g moves ln eta_re by
 // ln(eta_re) s_g / g. That enters each case's sd in quadrature with its standard error
 // (raised by the seed-scatter floor of resolution_extrapolation.hpp). The error is one c for
@@ -42,7 +44,8 @@ struct EffectiveVolumeFractionOptions {
   double offset_slope = 0.0;
   // c at a given resolution.
   double offset_at(int nodes_per_radius) const { return offset + offset_slope * (1.0 / nodes_per_radius - 1.0 / 8.0); }
-  // The sd of c entered in each case's sd (see above; 0: not entered).
+  // The sd of c entered in each case's sd (see above; 0: not entered). The shipped recipe
+  // gives 0.05; this default is `rbcal library effective-phi`'s.
   double offset_sd = 0.15;
   // Runs whose g phi_actual exceeds this are left out (they stand for no physiological sample).
   double phi_max = 0.62;

@@ -173,7 +173,7 @@ TEST(DiluteStiffSpheres, IntrinsicViscosityConvergesWithTheLattice) {
   EXPECT_LT(limit, 2.8);
   // The same runs read as a thickened sphere: eta_sp / phi = X (1 + c / N_a)^3, the
   // hydrodynamic radius a + c dx. The best c (one X for all four) is the offset the default
-  // library's effective volume fractions use, 0.75 +- 0.15 (surrogate/effective_volume_fraction.hpp;
+  // library's effective volume fractions use, 0.75 +- 0.05 (data/library/default/recipe.json;
   // docs/library.md measured 0.79 with X spread 0.3 %).
   double best_c = 0.0, best_spread = 1e9;
   for (int k = 300; k <= 1200; ++k) {
