@@ -60,7 +60,13 @@ struct RunOffset {
 RunOffset run_offset(const RecoverOptions& o) {
   RunOffset r{o.offset, {}};
   if (o.offset) return r;
-  const std::optional<surrogate::RecordedOffset> recorded = surrogate::recorded_offset(formats::read_json_file(o.surrogate));
+  std::optional<surrogate::RecordedOffset> recorded;
+  try {
+    recorded = surrogate::recorded_offset(formats::read_json_file(o.surrogate));
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(o.surrogate + ": its prior.mean or provenance.recipe.mapping cannot be read (" +
+                                e.what() + "); give --offset");
+  }
   if (!recorded)
     throw std::invalid_argument(o.surrogate + ": records no offset of its mapping (no family prior, no recipe); give "
                                 "--offset");
@@ -116,8 +122,11 @@ void run_recover(const RecoverOptions& o) {
   r.job.surrogate_file = o.surrogate;
   r.job.setup.cell_radius = r.sample.cell_radius;
   const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
+  // Relative to the working folder: the log and the record name no path of the machine they ran on.
+  const std::string model_shown =
+      std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();
   std::printf("rbcal recover: %zu runs (phi at %s), model %s, %zu true G_s x %d noise draws\n", points.size(),
-              offset.describe().c_str(), o.surrogate.c_str(), r.shear_moduli.size(), r.replicates);
+              offset.describe().c_str(), model_shown.c_str(), r.shear_moduli.size(), r.replicates);
   for (const auto& p : points)
     std::printf("  %s: phi %.4f, Ca %g, lambda %g, eta_re %.4f +- %.4f\n", p.id.c_str(), p.phi, p.capillary_number,
                 p.viscosity_ratio, p.eta_re, p.eta_re_se);
@@ -126,8 +135,7 @@ void run_recover(const RecoverOptions& o) {
   std::printf("%s", report.table().c_str());
   if (!o.output.empty()) {
     nlohmann::json j = report.to_json();
-    // Relative to the working folder: the record names no path of the machine it ran on.
-    j["model"] = std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();
+    j["model"] = model_shown;
     j["offset"] = o.offset ? nlohmann::json(*o.offset)
                            : nlohmann::json{{"at_N_a_8", offset.model.at_n8}, {"slope", offset.model.slope}};
     j["sample"] = {{"plasma_viscosity_mPa_s", o.plasma_viscosity_mPa},
@@ -182,8 +190,8 @@ void add_recover_command(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "Seed of the first sample's noise (then +1 per sample)")->capture_default_str();
   cmd->add_option("--offset", o->offset,
                   "Immersed-boundary offset c [lattice spacings] that maps each run to the volume fraction it stands "
-                  "for (0: the volume fraction as run); default: the offset the model's runs were mapped with, at "
-                  "each run's N_a")
+                  "for (0: the volume fraction as run); default: the model's own, c8 + slope (1/N_a - 1/8) with c8 "
+                  "the family's prior mean and the slope its recipe's, at each run's N_a")
       ->check(kNonNegative);
   cmd->add_option("--method", o->method, "alpha, direct, mcmc or all")
       ->capture_default_str()

@@ -10,7 +10,7 @@
 #   there:  bash scripts/gpu-check.sh [SECONDS] [ANCHOR...]
 # ANCHOR: a case of data/library/anchors/cases/ by name, or any case file by its path. Runs
 # resume from their checkpoints: a run cut off by SECONDS goes on in the next call while the
-# machine is still warm (its files stay under /tmp/gpu-check/runs).
+# machine is still warm (its files stay in the script's work folder there).
 # Writes OUT/log.txt (everything printed) and OUT/runs.tar.gz (each run's result.json,
 # series.csv and log); OUT defaults to ./gpu-check.out.
 set -u

@@ -156,7 +156,12 @@ ModelBuild build_model(const ModelRecipe& recipe, const fs::path& out, const Vol
       std::vector<int> resolutions;
       for (const SimulationLibrary& t : tiers)
         for (const LibraryCase& c : t.cases) resolutions.push_back(c.nodes_per_radius);
-      const BoxAnchorPrior anchors = box_anchor_prior(recipe.box_anchors, central, phi_eff_of, resolutions, twins);
+      BoxAnchorPrior anchors;
+      try {
+        anchors = box_anchor_prior(recipe.box_anchors, central, phi_eff_of, resolutions, twins);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(recipe.file.string() + ": field box_correction.anchors: " + e.what());
+      }
       note("box correction from anchor runs (the model's step to the bigger box):\n" + describe_box_anchors(anchors));
       prior = {anchors.mean, anchors.sd};
       source = printf_string(

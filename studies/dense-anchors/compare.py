@@ -4,7 +4,8 @@
 blind_predictions.csv is kept as written before the runs. Its column "eta_re_8a_mixture" is in
 fact the bulk mixture (the family's predictions carry its box correction), and "eta_re_bulk"
 applies the correction a second time; the prediction for the anchors' 16a gap is the mixture
-moved from the bulk to that gap (shipped_family.in_gap).
+moved from the bulk to that gap (shipped_family.in_gap) with the box correction it was written
+with (BLIND_BETA, the family of that day).
 
 Usage (from the repository root): python3 studies/dense-anchors/compare.py
 """
@@ -20,6 +21,8 @@ RESULTS = os.path.join(HERE, "..", "..", "data", "library", "anchors", "results"
 sys.path.insert(0, HERE)
 from shipped_family import in_gap
 
+BLIND_BETA = 0.102  # the shipped family's box correction when blind_predictions.csv was written
+
 rows = list(csv.DictReader(open(os.path.join(HERE, "blind_predictions.csv"))))
 print("| anchor | eta_re run (stresslet) | wall | 16a-gap prediction | z | bulk prediction (as written) | z | run / c 0.75 member in the gap | overlapping pairs |")
 print("|---|---|---|---|---|---|---|---|---|")
@@ -30,8 +33,8 @@ for r in rows:
     res = json.load(open(path))["result"]
     eta, sem, wall = res["eta_re"], res["eta_re_sem"], res["eta_re_wall"]
     bulk, sd_bulk = float(r["eta_re_8a_mixture"]), float(r["sd_8a_mixture"])
-    gap, sd_gap = in_gap(bulk, sd_bulk)
-    member = in_gap(float(r["eta_re_c0.75"]))[0]
+    gap, sd_gap = in_gap(bulk, sd_bulk, BLIND_BETA)
+    member = in_gap(float(r["eta_re_c0.75"]), 0.0, BLIND_BETA)[0]
     print(f"| {r['case']} | {eta:.3f} +- {sem:.3f} | {wall:.3f} | {gap:.3f} +- {sd_gap:.3f} | "
           f"{(eta - gap) / math.hypot(sd_gap, sem):+.2f} | {bulk:.3f} +- {sd_bulk:.3f} | "
           f"{(eta - bulk) / math.hypot(sd_bulk, sem):+.2f} | {eta / member:.3f} | {res.get('overlapping_cell_pairs')} |")

@@ -69,15 +69,18 @@ def first_order_extrapolation(by):
 
 # The family's predictions are for the bulk: its box correction (beta at its prior mean, ln
 # eta_bulk = (1 + beta) ln eta_8a) is integrated into them. The anchors' 16a gap lies part of
-# the way: the twins measured m = beta / 1.5 from the 8a gap to the 16a one
-# (surrogate/box_twins.hpp), so ln eta_16a = (1 + m) / (1 + beta) ln eta_bulk.
-GAP_EXPONENT = (1.0 + BETA_MEAN / 1.5) / (1.0 + BETA_MEAN)
+# the way: the twins measured the step from the 8a gap to the 16a one directly, TWIN_STEP (the
+# same runs in both gaps; data/library/default/build_report.txt, "box correction from twin
+# runs"), so ln eta_16a = (1 + TWIN_STEP) / (1 + beta) ln eta_bulk.
+TWIN_STEP = 0.068
 
 
-def in_gap(eta_bulk, sd_bulk=0.0):
-    """(eta, sd) in the 16a gap from the family's bulk prediction (sd scaled to first order)."""
-    eta = math.exp(GAP_EXPONENT * math.log(eta_bulk))
-    return eta, GAP_EXPONENT * eta / eta_bulk * sd_bulk
+def in_gap(eta_bulk, sd_bulk=0.0, beta=BETA_MEAN):
+    """(eta, sd) in the 16a gap from a bulk prediction made with box correction beta (sd scaled
+    to first order)."""
+    exponent = (1.0 + TWIN_STEP) / (1.0 + beta)
+    eta = math.exp(exponent * math.log(eta_bulk))
+    return eta, exponent * eta / eta_bulk * sd_bulk
 
 
 def in_library_gap(eta_bulk, sd_bulk=0.0):
