@@ -192,7 +192,7 @@ class SampleCalibration {
       if (r.direct->model_edge != ModelEdge::none) r.warnings.push_back("direct fit: " + r.direct->model_edge_reason);
       if (!r.direct->point_set_settled)
         r.warnings.push_back(std::string("direct fit: ") + kPointSetUnsettled);
-      if (r.direct->covariance_ok && r.direct->model_edge == ModelEdge::none)
+      if (r.direct->has_interval_estimate())
         if (auto w = extrapolation_warning("direct fit", r.direct->used_points(), r.direct->plasma_viscosity,
                                            o_.setup.cell_radius,
                                            r.direct->shear_modulus_interval.lower, model_.range()))

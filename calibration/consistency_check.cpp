@@ -38,7 +38,7 @@ std::vector<MethodValue> shear_modulus_by_method(const SampleReport& r) {
     // The interval the report prints for the alpha method (mean +- 1.96 se).
     out.push_back({"alpha", g.mean, {g.mean - 1.96 * g.standard_error, g.mean + 1.96 * g.standard_error, 0.95}});
   }
-  if (r.direct && r.direct->covariance_ok && r.direct->model_edge == ModelEdge::none)
+  if (r.direct && r.direct->has_interval_estimate())
     out.push_back({"direct", r.direct->shear_modulus, r.direct->shear_modulus_interval});
   if (r.mcmc) out.push_back({"mcmc", r.mcmc->mcmc.converged ? r.mcmc->shear_modulus_median : 0.0, r.mcmc->shear_modulus_interval});
   out.erase(std::remove_if(out.begin(), out.end(), [](const MethodValue& m) { return !(m.value > 0.0); }), out.end());

@@ -90,6 +90,9 @@ struct DirectFitResult {
   // lie below the model; smallest_ca: a lower limit); messages say so.
   ModelEdge model_edge = ModelEdge::none;
   std::string model_edge_reason;  // the message that says so, empty when none
+  // G_s's interval is an estimate's: a covariance was computed and G_s is not held at an edge
+  // (where the interval is a limit).
+  bool has_interval_estimate() const { return covariance_ok && model_edge == ModelEdge::none; }
   bool converged = false;
   // Over the used points: the squared whitened residuals (without a robust loss), else the
   // squared weighted residuals.

@@ -27,8 +27,7 @@ RecoveryCase case_from(const SampleReport& r, double truth, std::uint64_t seed) 
   c.seed = seed;
   c.warnings = r.warnings;
   if (r.alpha && r.alpha->shear_modulus.count > 0) c.alpha = r.alpha->shear_modulus.mean;
-  const bool direct_scored = r.direct && r.direct->model_edge == ModelEdge::none && r.direct->covariance_ok;
-  if (direct_scored) c.direct = recovered(r.direct->shear_modulus, r.direct->shear_modulus_interval, truth);
+  if (r.direct && r.direct->has_interval_estimate()) c.direct = recovered(r.direct->shear_modulus, r.direct->shear_modulus_interval, truth);
   if (r.mcmc && r.mcmc->start_fit.model_edge == ModelEdge::none)
     c.mcmc = recovered(r.mcmc->shear_modulus_median, r.mcmc->shear_modulus_interval, truth);
   if (r.mcmc)

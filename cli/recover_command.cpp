@@ -57,12 +57,12 @@ struct RunOffset {
   }
 };
 
-RunOffset run_offset(const RecoverOptions& o) {
+RunOffset run_offset(const RecoverOptions& o, const nlohmann::json& model_file) {
   RunOffset r{o.offset, {}};
   if (o.offset) return r;
   std::optional<surrogate::RecordedOffset> recorded;
   try {
-    recorded = surrogate::recorded_offset(formats::read_json_file(o.surrogate));
+    recorded = surrogate::recorded_offset(model_file);
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(o.surrogate + ": its prior.mean or provenance.recipe.mapping cannot be read (" +
                                 e.what() + "); give --offset");
@@ -97,7 +97,8 @@ void run_recover(const RecoverOptions& o) {
     out.open(o.output);
     if (!out) throw std::runtime_error("cannot write " + o.output);
   }
-  const RunOffset offset = run_offset(o);
+  const nlohmann::json model_file = formats::read_json_file(o.surrogate);  // read once: offset record and model
+  const RunOffset offset = run_offset(o, model_file);
   std::vector<calibration::SimulatedViscosity> points;
   for (const std::string& f : o.runs) {
     const surrogate::LibraryCase run = surrogate::read_library_case(f);
@@ -121,7 +122,7 @@ void run_recover(const RecoverOptions& o) {
   r.job.method = o.method;
   r.job.surrogate_file = o.surrogate;
   r.job.setup.cell_radius = r.sample.cell_radius;
-  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::load_viscosity_model(o.surrogate);
+  const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::viscosity_model_from_json(model_file, o.surrogate);
   // Relative to the working folder: the log and the record name no path of the machine they ran on.
   const std::string model_shown =
       std::filesystem::path(o.surrogate).lexically_proximate(std::filesystem::current_path()).string();

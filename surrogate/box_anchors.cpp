@@ -42,9 +42,8 @@ BoxAnchorPrior box_anchor_prior(const std::vector<std::filesystem::path>& anchor
   const BetaSpread spread = spread_of(beta, se);
   p.mean_beta = spread.mean, p.scatter = spread.scatter, p.mean_se = spread.mean_se;
   p.twins_mean_beta = twins.mean_beta;
-  const double beyond = 0.5 * twins.mean_beta;
-  p.mean = p.mean_beta + beyond;
-  p.sd = std::sqrt(p.scatter * p.scatter + beyond * beyond + p.mean_se * p.mean_se);
+  const BulkPrior bulk = bulk_prior(spread, twins.mean_beta);
+  p.mean = bulk.mean, p.sd = bulk.sd;
   return p;
 }
 

@@ -8,7 +8,7 @@
 // is the step from the model to the bigger box: the box itself and the model's own error at
 // that point together (the twins of box_twins.hpp see the box alone). For the calibration the
 // sum is what counts. The prior for the bulk adds what lies between the doubled box and the
-// bulk as the twins' rule does (half the twins' mean m, with as much again as its uncertainty):
+// bulk by the twins' rule (bulk_prior in box_twins.hpp, with the twins' mean m):
 //     mean = n + 0.5 m,   sd = sqrt(s^2 + (0.5 m)^2 + se_n^2),
 // n the anchors' mean beta, s their scatter, se_n the mean's standard error from the runs.
 #include <filesystem>

@@ -34,6 +34,11 @@ BetaSpread spread_of(const std::vector<double>& beta, const std::vector<double>&
   return out;
 }
 
+BulkPrior bulk_prior(const BetaSpread& step, double twins_mean_beta) {
+  const double beyond = 0.5 * twins_mean_beta;
+  return {step.mean + beyond, std::sqrt(step.scatter * step.scatter + beyond * beyond + step.mean_se * step.mean_se)};
+}
+
 BoxTwinPrior box_twin_prior(const std::vector<BoxTwinFiles>& pairs) {
   if (pairs.empty()) throw std::invalid_argument("box correction: no twin pairs given");
   BoxTwinPrior p;
@@ -55,9 +60,8 @@ BoxTwinPrior box_twin_prior(const std::vector<BoxTwinFiles>& pairs) {
   for (const BoxTwin& t : p.twins) beta.push_back(t.beta), se.push_back(t.beta_se);
   const BetaSpread spread = spread_of(beta, se);
   p.mean_beta = spread.mean, p.scatter = spread.scatter, p.mean_se = spread.mean_se;
-  p.mean = 1.5 * p.mean_beta;
-  const double half = 0.5 * p.mean_beta;
-  p.sd = std::sqrt(p.scatter * p.scatter + half * half + p.mean_se * p.mean_se);
+  const BulkPrior bulk = bulk_prior(spread, spread.mean);  // the twins are their own step: 1.5 m
+  p.mean = bulk.mean, p.sd = bulk.sd;
   return p;
 }
 

@@ -34,6 +34,14 @@ struct BetaSpread {
 };
 BetaSpread spread_of(const std::vector<double>& beta, const std::vector<double>& beta_se);
 
+// The prior for the bulk from a measured step to the doubled box (its mean n, scatter s and
+// standard error se) and the twins' gap effect m: beyond the doubled box lies half of m, with as
+// much again as its uncertainty (the rule above), so mean n + 0.5 m, sd sqrt(s^2 + (0.5 m)^2 + se^2).
+struct BulkPrior {
+  double mean = 0.0, sd = 0.0;
+};
+BulkPrior bulk_prior(const BetaSpread& step, double twins_mean_beta);
+
 struct BoxTwinPrior {
   std::vector<BoxTwin> twins;
   double mean_beta = 0.0, scatter = 0.0, mean_se = 0.0;  // m, s, se_m

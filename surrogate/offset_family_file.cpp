@@ -72,12 +72,15 @@ OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file) {
   return surrogate_family_from_json(formats::read_json_file(file), file.string());
 }
 
-std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file) {
-  const nlohmann::json j = formats::read_json_file(file);
+std::unique_ptr<ViscosityModel> viscosity_model_from_json(const nlohmann::json& j, const std::string& source) {
   const std::string schema = j.is_object() && j.contains("schema") && j["schema"].is_string() ? j["schema"] : "";
   if (schema == formats::kSurrogateFamilySchema)
-    return std::make_unique<OffsetFamilyModel>(surrogate_family_from_json(j, file.string()));
-  return std::make_unique<ViscositySurrogate>(surrogate_from_json(j, file.string()));
+    return std::make_unique<OffsetFamilyModel>(surrogate_family_from_json(j, source));
+  return std::make_unique<ViscositySurrogate>(surrogate_from_json(j, source));
+}
+
+std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file) {
+  return viscosity_model_from_json(formats::read_json_file(file), file.string());
 }
 
 std::optional<RecordedOffset> recorded_offset(const nlohmann::json& j) {

@@ -44,6 +44,8 @@ OffsetFamilyModel load_surrogate_family(const std::filesystem::path& file);
 
 // A surrogate (rbcal.surrogate/1) or a surrogate family (rbcal.surrogate_family/1), by its schema.
 std::unique_ptr<ViscosityModel> load_viscosity_model(const std::filesystem::path& file);
+// The same from the file's parsed content (source: the file, for messages).
+std::unique_ptr<ViscosityModel> viscosity_model_from_json(const nlohmann::json& j, const std::string& source);
 
 // The offset a model file's runs were mapped with, c(N_a) = at_n8 + slope (1 / N_a - 1 / 8)
 // (effective_volume_fraction.hpp): for a family the prior's mean, for a surrogate its recipe's
