@@ -155,3 +155,32 @@ for label, pattern in (("rolling, Ca 0.01", "roll"), ("in the shear plane, Ca 1"
             c = cs.get(n)
             cols.append(f"{x / (B_rbc * g_rbc(c / n)):.3f} (c {c:.3f})" if c is not None else "-")
         print(f"| {n} | {x:.4f} +- {sem:.4f} | " + " | ".join(cols) + " |")
+
+# The red cell's own c: with no exact X_inf, fit c and X_inf together (one c for the runs
+# used, X_inf the geometric mean that c leaves), over the finest runs; then what each fit,
+# and the sphere's c, predict for the next resolution (written before that run finished).
+def joint_fit(points, f):
+    best = None
+    for k in range(0, 1501):
+        c = k / 1000.0
+        logs = [math.log(x / f(c / n)) for n, x in points]
+        x_inf = math.exp(sum(logs) / len(logs))
+        rms = math.sqrt(sum((v - math.log(x_inf)) ** 2 for v in logs) / len(logs))
+        if best is None or rms < best[2]: best = (c, x_inf, rms)
+    return best
+
+roll = sorted((n, x) for name, (n, b, x, s_) in rbc.items() if "roll" in name and b == base)
+if len(roll) >= 2:
+    print("\n## Red cell, lambda 5, rolling, Ca 0.01: c and X_inf fitted together (volume form, box B divided out)")
+    print("| runs | c | X_inf | RMS residual | predicted eta_sp / phi at N_a 16 |")
+    print("|---|---|---|---|---|")
+    pts = [(n, x / B_rbc) for n, x in roll if n <= 12]
+    for lo in sorted({n for n, _ in pts})[:-1]:
+        sel = [p for p in pts if p[0] >= lo]
+        c, x_inf, rms = joint_fit(sel, g_rbc)
+        print(f"| N_a {lo}-{sel[-1][0]} | {c:.3f} | {x_inf:.3f} | {100 * rms:.2f} % | {x_inf * B_rbc * g_rbc(c / 16):.4f} |")
+    n12 = dict(roll).get(12)
+    if n12 is not None:
+        x12 = n12 / (B_rbc * g_rbc(c_sphere[12] / 12))
+        print(f"| the sphere's c (0.608 at N_a 16), X_inf from N_a 12 | {c_sphere[16]:.3f} | {x12:.3f} | - | "
+              f"{x12 * B_rbc * g_rbc(c_sphere[16] / 16):.4f} |")
