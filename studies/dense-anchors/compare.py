@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The finished anchors against the blind predictions: z = (run - prediction) / sqrt(sd^2 + sem^2).
+"""The finished anchors against the blind predictions: z = (run - prediction) / sqrt(sd^2 + sem^2);
+the N_a 12 anchors first, then (once any has finished) the N_a 16 tier against its three levels.
 
 blind_predictions.csv is kept as written before the runs. Its column "eta_re_8a_mixture" is in
 fact the bulk mixture (the family's predictions carry its box correction), and "eta_re_bulk"
@@ -38,3 +39,30 @@ for r in rows:
     print(f"| {r['case']} | {eta:.3f} +- {sem:.3f} | {wall:.3f} | {gap:.3f} +- {sd_gap:.3f} | "
           f"{(eta - gap) / math.hypot(sd_gap, sem):+.2f} | {bulk:.3f} +- {sd_bulk:.3f} | "
           f"{(eta - bulk) / math.hypot(sd_bulk, sem):+.2f} | {eta / member:.3f} | {res.get('overlapping_cell_pairs')} |")
+
+# The N_a 16 tier against its three blind predictions, written for the 16a gap before any
+# N_a 16 run (blind_predictions_gap.py): the shipped family, the wide-offset family shipped
+# before it, and the measured-thickening level.
+LEVELS = [("shipped", "blind_predictions_n16_gap_shipped.csv"),
+          ("wide offset", "blind_predictions_n16_gap_wide_offset.csv"),
+          ("measured level", "blind_predictions_n16_gap_measured_level.csv")]
+
+def predictions(name):
+    with open(os.path.join(HERE, name)) as f:
+        return {r["case"]: r for r in csv.DictReader(line for line in f if not line.startswith("#"))}
+
+tables = [(label, predictions(name)) for label, name in LEVELS]
+finished = [case for case in tables[0][1] if os.path.exists(os.path.join(RESULTS, case + ".result.json"))]
+if finished:
+    print("\n| N_a 16 anchor | eta_re run (stresslet) | wall | " +
+          " | ".join(f"{label}: prediction | z" for label, _ in tables) + " | overlapping pairs |")
+    print("|---|---|---|" + "---|---|" * len(tables) + "---|")
+    for case in finished:
+        res = json.load(open(os.path.join(RESULTS, case + ".result.json")))["result"]
+        eta, sem = res["eta_re"], res["eta_re_sem"]
+        cols = []
+        for _, table in tables:
+            pred, sd = float(table[case]["eta_re_16a"]), float(table[case]["sd_16a"])
+            cols.append(f"{pred:.3f} +- {sd:.3f} | {(eta - pred) / math.hypot(sd, sem):+.2f}")
+        print(f"| {case} | {eta:.3f} +- {sem:.3f} | {res['eta_re_wall']:.3f} | " + " | ".join(cols) +
+              f" | {res.get('overlapping_cell_pairs')} |")
