@@ -42,7 +42,10 @@ foreach(module formats solver surrogate calibration bench cli python)
     endforeach()
   endforeach()
 endforeach()
-file(GLOB_RECURSE build_files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/CMakeLists.txt" "${SOURCE_DIR}/*/CMakeLists.txt")
+# Three levels deep, not recursive: a recursive walk also lists the build trees inside the
+# checkout, whose files other tests create and delete while this one runs.
+file(GLOB build_files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/CMakeLists.txt" "${SOURCE_DIR}/*/CMakeLists.txt"
+     "${SOURCE_DIR}/*/*/CMakeLists.txt" "${SOURCE_DIR}/*/*/*/CMakeLists.txt")
 list(FILTER build_files EXCLUDE REGEX "^build[^/]*/")  # build trees inside the checkout
 foreach(build_file IN LISTS build_files)
   file(READ "${SOURCE_DIR}/${build_file}" text)
