@@ -44,17 +44,26 @@ MethodCoverage coverage_of(const std::string& name, const std::vector<RecoveryCa
                            std::optional<RecoveredValue> RecoveryCase::*member) {
   MethodCoverage m{name};
   m.asked = static_cast<int>(cases.size());
-  std::vector<double> widths;
-  double sum_ln_ratio = 0.0;
+  std::vector<double> widths, ln_ratios;
   for (const RecoveryCase& c : cases) {
     const auto& v = c.*member;
     if (!v) continue;
     ++m.answered;
-    sum_ln_ratio += std::log(v->estimate / c.truth);
+    ln_ratios.push_back(std::log(v->estimate / c.truth));
     m.covered += v->covers ? 1 : 0;
     if (v->interval.lower > 0.0) widths.push_back(v->interval.upper / v->interval.lower);
   }
-  if (m.answered > 0) m.bias_factor = std::exp(sum_ln_ratio / m.answered);
+  const double n = static_cast<double>(ln_ratios.size());
+  if (n > 0) {
+    double mean = 0.0;
+    for (const double r : ln_ratios) mean += r / n;
+    m.bias_factor = std::exp(mean);
+    if (n > 1) {
+      double sum_sq = 0.0;
+      for (const double r : ln_ratios) sum_sq += (r - mean) * (r - mean);
+      m.bias_factor_se = m.bias_factor * std::sqrt(sum_sq / (n - 1) / n);
+    }
+  }
   if (!widths.empty()) m.median_width_factor = quantile(std::move(widths), 0.5);
   return m;
 }
@@ -147,7 +156,8 @@ nlohmann::json RecoveryReport::to_json() const {
                           {"warnings", c.warnings}});
   for (const MethodCoverage& m : coverage)
     j["coverage"][m.method] = {{"answered", m.answered}, {"covered", m.covered}, {"asked", m.asked}, {"fraction", m.fraction()},
-                               {"median_width_factor", m.median_width_factor}, {"bias_factor", m.bias_factor}};
+                               {"median_width_factor", m.median_width_factor}, {"bias_factor", m.bias_factor},
+                               {"bias_factor_se", m.bias_factor_se}};
   j["methods_agree"] = methods_agree;
   j["cases_total"] = cases.size();
   return j;
@@ -156,11 +166,12 @@ nlohmann::json RecoveryReport::to_json() const {
 std::string RecoveryReport::table() const {
   std::ostringstream out;
   out << "| method | truth inside its 95 % interval | no interval | median width (upper / lower) | estimate / truth "
-         "(geometric mean) |\n|---|---|---|---|---|\n";
-  char buf[160];
+         "(geometric mean +- its standard error) |\n|---|---|---|---|---|\n";
+  char buf[192];
   for (const MethodCoverage& m : coverage) {
-    std::snprintf(buf, sizeof buf, "| %s | %d of %d (%.0f %%) | %d | %.2f | %.2f |\n", m.method.c_str(), m.covered,
-                  m.asked, 100.0 * m.fraction(), m.asked - m.answered, m.median_width_factor, m.bias_factor);
+    std::snprintf(buf, sizeof buf, "| %s | %d of %d (%.0f %%) | %d | %.2f | %.2f +- %.2f |\n", m.method.c_str(),
+                  m.covered, m.asked, 100.0 * m.fraction(), m.asked - m.answered, m.median_width_factor,
+                  m.bias_factor, m.bias_factor_se);
     out << buf;
   }
   if (coverage.size() == 2)

@@ -70,6 +70,9 @@ struct MethodCoverage {
   int covered = 0;
   double median_width_factor = 0.0;  // median of upper / lower over the answered cases
   double bias_factor = 1.0;          // geometric mean of estimate / truth over the answered cases
+  // Its standard error from the cases' scatter (the noise draws' sampling error; 0 below two
+  // answered cases): sd of ln(estimate / truth) / sqrt(answered), times bias_factor.
+  double bias_factor_se = 0.0;
   double fraction() const { return asked > 0 ? static_cast<double>(covered) / asked : 0.0; }
 };
 

@@ -51,6 +51,8 @@ TEST(KnownTruthRecovery, TheModelsOwnLawIsRecoveredInsideTheIntervals) {
     EXPECT_GE(c->fraction(), 0.9) << method << "\n" << r.table() << log.str();
     // 5 % noise on 8 points: no systematic error beyond a few percent in ln G_s.
     EXPECT_NEAR(c->bias_factor, 1.0, 0.15) << method << "\n" << r.table();
+    // The estimates scatter with the noise, so the bias carries a sampling error.
+    EXPECT_GT(c->bias_factor_se, 0.0) << method;
     EXPECT_GT(c->median_width_factor, 1.0) << method;
   }
   EXPECT_GE(r.methods_agree, 11) << r.table() << log.str();
@@ -71,6 +73,8 @@ TEST(KnownTruthRecovery, ALevelTenPercentHighIsCaughtAsABias) {
   ASSERT_NE(c, nullptr);
   EXPECT_GT(c->bias_factor, 1.5) << r.table();
   EXPECT_LT(c->fraction(), 0.9) << r.table();
+  // Caught beyond the noise draws' sampling error, not by chance.
+  EXPECT_GT(c->bias_factor - 1.0, 3.0 * c->bias_factor_se) << r.table();
 }
 
 TEST(KnownTruthRecovery, RefusesAnEmptyDesign) {
