@@ -264,7 +264,7 @@ class DirectFit {
   DirectFit(const SampleData& sample, const surrogate::ViscosityModel& model, const DirectFitOptions& options)
       : sample_(sample),
         options_(options),
-        obs_{&model, sample.plasma.eta0, options.setup.cell_radius},
+        obs_{&model, sample.plasma.eta0, options.setup.cell_radius, {}},
         range_(model.range()),
         fit_eta0_(options.plasma_viscosity_as_parameter && plasma_viscosity_can_be_parameter(sample)),
         nuisances_(options.model_nuisances_as_parameters ? model.nuisances() : std::vector<surrogate::ModelNuisance>{}) {

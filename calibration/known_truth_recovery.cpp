@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +13,7 @@
 #include "calibration/calibration_input.hpp"
 #include "calibration/calibration_report.hpp"
 #include "calibration/quantiles.hpp"
+#include "calibration/rheometer_data.hpp"
 #include "formats/units.hpp"
 
 namespace rbcal::calibration {
@@ -97,6 +100,16 @@ nlohmann::json nuisances_json(const std::vector<NuisanceEstimate>& nuisances) {
   return j;
 }
 
+void write_sample(const RheometerData& data, const std::string& folder, double truth, std::uint64_t seed) {
+  std::filesystem::create_directories(folder);
+  char name[64];
+  std::snprintf(name, sizeof name, "gs%g_seed%llu.csv", truth * kMicro, static_cast<unsigned long long>(seed));
+  const std::filesystem::path path = std::filesystem::path(folder) / name;
+  std::ofstream out(path);
+  write_rheometer_csv(data, out);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
 }  // namespace
 
 const MethodCoverage* RecoveryReport::method(const std::string& name) const {
@@ -122,7 +135,9 @@ RecoveryReport recover_known_shear_moduli(const std::vector<SimulatedViscosity>&
       SyntheticSampleOptions so = o.sample;
       so.shear_modulus = truth;
       so.seed = o.sample.seed + report.cases.size();
-      const CalibrationInput input = make_calibration_input(synthetic_rheometer_data(points, so));
+      const RheometerData data = synthetic_rheometer_data(points, so);
+      if (!o.samples_folder.empty()) write_sample(data, o.samples_folder, truth, so.seed);
+      const CalibrationInput input = make_calibration_input(data);
       const CalibrationReport calibrated = calibrate_samples(input, model, job, quiet);
       quiet.str("");
       report.cases.push_back(case_from(calibrated.samples.front(), truth, so.seed));

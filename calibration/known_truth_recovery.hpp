@@ -22,6 +22,9 @@ struct RecoveryOptions {
   std::vector<double> shear_moduli = {1e-6, 2e-6, 4e-6, 8e-6};  // the truths [N/m]
   int replicates = 3;               // noise draws per truth (seeds seed, seed + 1, ...)
   SyntheticSampleOptions sample;    // eta0, a, noise, first seed (its G_s is each truth in turn)
+  // When set, each synthetic sample is also written there as a rheometer CSV,
+  // gs<truth in uN/m>_seed<seed>.csv, for `rbcal calibrate` to take up one case by hand.
+  std::string samples_folder;
   CalibrationJobOptions job = [] {  // the methods and their options (every method, every point)
     CalibrationJobOptions o;
     o.min_shear_rate = 0.0;         // simulated suspensions do not aggregate

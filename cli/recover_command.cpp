@@ -37,6 +37,7 @@ struct RecoverOptions {
   std::optional<double> offset;  // empty: the offset the model's runs were mapped with
   std::string method = "all";
   std::string output;
+  std::string samples_folder;
   double required_coverage = 0.0;
 };
 
@@ -120,6 +121,7 @@ void run_recover(const RecoverOptions& o) {
   r.sample.relative_noise = o.noise;
   r.sample.seed = o.seed;
   r.job.method = o.method;
+  r.samples_folder = o.samples_folder;
   r.job.surrogate_file = o.surrogate;
   r.job.setup.cell_radius = r.sample.cell_radius;
   const std::unique_ptr<surrogate::ViscosityModel> model = surrogate::viscosity_model_from_json(model_file, o.surrogate);
@@ -198,6 +200,9 @@ void add_recover_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"alpha", "direct", "mcmc", "all"}));
   cmd->add_option("-o,--output", o->output, "Also write the cases and coverage as JSON (rbcal.recovery/1)");
+  cmd->add_option("--write-samples", o->samples_folder,
+                  "Also write each synthetic sample to this folder as a rheometer CSV (gs<G_s>_seed<seed>.csv), "
+                  "for `rbcal calibrate` to take up one case by hand");
   cmd->add_option("--require-coverage", o->required_coverage,
                   "Exit 1 when the direct fit's or the MCMC's coverage is below this fraction")
       ->check(CLI::Range(0.0, 1.0));
