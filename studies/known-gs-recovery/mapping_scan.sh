@@ -5,9 +5,11 @@
 # surrogate's runs and hyper-parameters), and `rbcal recover` runs on each resolution's anchors,
 # labelled at the model's own c(N_a). Usage, from the repository root:
 #   bash studies/known-gs-recovery/mapping_scan.sh OUT "C8,K ..." > table.md
+# REPLICATES (default 3) sets the noise draws per true G_s: 4 x REPLICATES cases per tier.
 set -eu
 out=$1; shift
 rbcal=${RBCAL:-build/bin/rbcal}
+replicates=${REPLICATES:-3}
 mkdir -p "$out"
 echo "| c8 | K | c(6) | c(12) | N_a 8: direct / MCMC estimate / truth, coverage | N_a 12: direct / MCMC, coverage |"
 echo "|---|---|---|---|---|---|"
@@ -33,12 +35,14 @@ PY
   cells=()
   for n in 8 12; do
     "$rbcal" recover data/library/anchors/results/n${n}_*.result.json --surrogate "$dir/model/surrogate_family.json" \
-      --replicates 3 -o "$dir/recover_n$n.json" > "$dir/recover_n$n.txt" 2>&1
+      --replicates "$replicates" -o "$dir/recover_n$n.json" > "$dir/recover_n$n.txt" 2>&1
     cells+=("$(python3 - "$dir/recover_n$n.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
 c = j["coverage"]
-print(f"{c['direct']['bias_factor']:.2f} / {c['mcmc']['bias_factor']:.2f}, {c['direct']['covered']}+{c['mcmc']['covered']} of 24")
+d, m = c['direct'], c['mcmc']
+print(f"{d['bias_factor']:.2f} +- {d['bias_factor_se']:.2f} / {m['bias_factor']:.2f} +- {m['bias_factor_se']:.2f}, "
+      f"{d['covered']}+{m['covered']} of {d['asked'] + m['asked']}")
 PY
 )")
   done
