@@ -12,11 +12,10 @@ import math
 import os
 import sys
 
+c = float(sys.argv[1]) if len(sys.argv) > 1 else 0.75
+sys.argv = sys.argv[:1]  # shipped_family reads its own optional argument (the rbcal to call)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "dense-anchors"))
 import shipped_family as sf  # noqa: E402
-
-c = float(sys.argv[1]) if len(sys.argv) > 1 else 0.75
-sys.argv = sys.argv[:1]
 CA_MIN, CA_MAX = 0.01, 18.0
 
 def model_at(phi_eff, ca, lam):
