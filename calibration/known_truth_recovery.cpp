@@ -107,6 +107,7 @@ void write_sample(const RheometerData& data, const std::string& folder, double t
   const std::filesystem::path path = std::filesystem::path(folder) / name;
   std::ofstream out(path);
   write_rheometer_csv(data, out);
+  out.close();  // a failed final flush shows only here
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 

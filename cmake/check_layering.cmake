@@ -42,11 +42,16 @@ foreach(module formats solver surrogate calibration bench cli python)
     endforeach()
   endforeach()
 endforeach()
-# Three levels deep, not recursive: a recursive walk also lists the build trees inside the
-# checkout, whose files other tests create and delete while this one runs.
-file(GLOB build_files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/CMakeLists.txt" "${SOURCE_DIR}/*/CMakeLists.txt"
-     "${SOURCE_DIR}/*/*/CMakeLists.txt" "${SOURCE_DIR}/*/*/*/CMakeLists.txt")
-list(FILTER build_files EXCLUDE REGEX "^build[^/]*/")  # build trees inside the checkout
+# Every folder of the checkout but the build trees (and hidden ones), walked to any depth; the
+# build trees are not walked at all: other tests create and delete files there meanwhile.
+set(build_files CMakeLists.txt)
+file(GLOB top_folders LIST_DIRECTORIES true RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/*")
+foreach(folder IN LISTS top_folders)
+  if(IS_DIRECTORY "${SOURCE_DIR}/${folder}" AND NOT folder MATCHES "^(build|\\.)")
+    file(GLOB_RECURSE found RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/${folder}/CMakeLists.txt")
+    list(APPEND build_files ${found})
+  endif()
+endforeach()
 foreach(build_file IN LISTS build_files)
   file(READ "${SOURCE_DIR}/${build_file}" text)
   string(REGEX MATCHALL "target_include_directories\\([^)]*(PUBLIC|INTERFACE)[^)]*\\)" exported "${text}")
