@@ -24,7 +24,10 @@ from shipped_family import in_gap
 
 BLIND_BETA = 0.102  # the shipped family's box correction when blind_predictions.csv was written
 
+# The N_a 12 rows, then the N_a 8 rows of blind_predictions_n8_n16.csv (written the same way,
+# the same day, before those runs; its N_a 16 rows are superseded by the gap files below).
 rows = list(csv.DictReader(open(os.path.join(HERE, "blind_predictions.csv"))))
+rows += [r for r in csv.DictReader(open(os.path.join(HERE, "blind_predictions_n8_n16.csv"))) if r["case"].startswith("n8_")]
 print("| anchor | eta_re run (stresslet) | wall | 16a-gap prediction | z | bulk prediction (as written) | z | run / c 0.75 member in the gap | overlapping pairs |")
 print("|---|---|---|---|---|---|---|---|---|")
 for r in rows:
