@@ -1,6 +1,7 @@
 #include "calibration/alpha_method.hpp"
 
 #include "calibration/detail/curve_interpolation.hpp"
+#include "calibration/sample_mean.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,23 +13,11 @@ namespace rbcal::calibration {
 namespace {
 
 ShearModulusSummary summarise(const std::vector<AlphaMatch>& matches) {
-  ShearModulusSummary s;
-  double sum = 0.0;
+  std::vector<double> matched;
   for (const auto& m : matches)
-    if (m.matched) {
-      sum += m.shear_modulus;
-      ++s.count;
-    }
-  if (s.count == 0) return s;
-  s.mean = sum / s.count;
-  if (s.count > 1) {
-    double squares = 0.0;
-    for (const auto& m : matches)
-      if (m.matched) squares += (m.shear_modulus - s.mean) * (m.shear_modulus - s.mean);
-    s.sd = std::sqrt(squares / (s.count - 1));
-    s.standard_error = s.sd / std::sqrt(static_cast<double>(s.count));
-  }
-  return s;
+    if (m.matched) matched.push_back(m.shear_modulus);
+  const SampleMean g = sample_mean(matched);
+  return {g.mean, g.sd, g.standard_error, g.count};
 }
 
 // Picks the crossing and writes the message; false if there is none.

@@ -14,6 +14,7 @@
 #include "calibration/calibration_report.hpp"
 #include "calibration/quantiles.hpp"
 #include "calibration/rheometer_data.hpp"
+#include "calibration/sample_mean.hpp"
 #include "formats/units.hpp"
 
 namespace rbcal::calibration {
@@ -56,16 +57,10 @@ MethodCoverage coverage_of(const std::string& name, const std::vector<RecoveryCa
     m.covered += v->covers ? 1 : 0;
     if (v->interval.lower > 0.0) widths.push_back(v->interval.upper / v->interval.lower);
   }
-  const double n = static_cast<double>(ln_ratios.size());
-  if (n > 0) {
-    double mean = 0.0;
-    for (const double r : ln_ratios) mean += r / n;
-    m.bias_factor = std::exp(mean);
-    if (n > 1) {
-      double sum_sq = 0.0;
-      for (const double r : ln_ratios) sum_sq += (r - mean) * (r - mean);
-      m.bias_factor_se = m.bias_factor * std::sqrt(sum_sq / (n - 1) / n);
-    }
+  if (!ln_ratios.empty()) {
+    const SampleMean ln_bias = sample_mean(ln_ratios);
+    m.bias_factor = std::exp(ln_bias.mean);
+    m.bias_factor_se = m.bias_factor * ln_bias.standard_error;
   }
   if (!widths.empty()) m.median_width_factor = quantile(std::move(widths), 0.5);
   return m;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
+
+#include "calibration/sample_mean.hpp"
 
 namespace rbcal::calibration {
 
@@ -22,18 +25,16 @@ PlasmaViscosity estimate_plasma_viscosity(const std::vector<RheometerRow>& plasm
   const double m = static_cast<double>(plateau.size());
   PlasmaViscosity result;
   result.plateau_rows = static_cast<int>(plateau.size());
-  double sum = 0.0, variance_of_sum = 0.0;
+  std::vector<double> viscosities;
+  double variance_of_sum = 0.0;
   for (const auto* row : plateau) {
-    sum += row->viscosity;
+    viscosities.push_back(row->viscosity);
     variance_of_sum += row->viscosity_sd * row->viscosity_sd / row->repeats;
   }
-  result.eta0 = sum / m;
+  const SampleMean scatter = sample_mean(viscosities);
+  result.eta0 = scatter.mean;
   result.propagated_standard_error = std::sqrt(variance_of_sum) / m;
-  if (plateau.size() > 1) {
-    double squares = 0.0;
-    for (const auto* row : plateau) squares += (row->viscosity - result.eta0) * (row->viscosity - result.eta0);
-    result.scatter_standard_error = std::sqrt(squares / (m - 1.0) / m);
-  }
+  result.scatter_standard_error = scatter.standard_error;
   result.standard_error = std::max(result.scatter_standard_error, result.propagated_standard_error);
   return result;
 }
