@@ -16,7 +16,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from shipped_family import anchor_runs, first_order_extrapolation, member_in_gap, point_parameters
 
 runs = anchor_runs()
-print("| point | N_a 8 | N_a 12 | N_a 16 | extrapolated (first order in 1/N_a) | family at phi as run, 16a gap: c 0.45 / 0.75 / 1.05 |")
+print("| point | N_a 8 | N_a 12 | N_a 16 | extrapolated (first order in 1/N_a) | family at phi as run, 16a gap: c 0.55 / 0.75 / 0.95 |")
 print("|---|---|---|---|---|---|")
 for point in sorted(runs):
     by = runs[point]
@@ -27,5 +27,5 @@ for point in sorted(runs):
         extrapolated = f"{inf:.3f} +- {sem:.3f} (N_a {n1}, {n2})"
     ca, lam = point_parameters(point)
     phi = next(iter(by.values()))[2]
-    model = [member_in_gap(phi, ca, lam, c) for c in (0.45, 0.75, 1.05)]
+    model = [member_in_gap(phi, ca, lam, c) for c in (0.55, 0.75, 0.95)]
     print(f"| {point} | " + " | ".join(cells) + f" | {extrapolated} | " + " / ".join(f"{m:.3f}" for m in model) + " |")
