@@ -219,6 +219,7 @@ class SampleCalibration {
         for (std::string& w : range_cut_warnings(r.mcmc->points, r.mcmc->plasma_viscosity_median, o_.setup.cell_radius,
                                                  r.mcmc->shear_modulus_interval, model_.range()))
           r.warnings.push_back(std::move(w));
+      if (!o_.mcmc_byproducts) return;
       PredictiveBandOptions bo;
       bo.seed = o_.sampler.seed + 1;
       r.band_level = bo.level;

@@ -56,6 +56,10 @@ struct CalibrationJobOptions {
   }();
   // MCMC draws per sample kept for the report's posterior file and chains.csv (thinned by step).
   int saved_draws = 4000;
+  // The MCMC's by-products: predictive bands, the posterior predictive check, the saved draws
+  // and the evidence, four fifths of a small sample's MCMC time. Off where only the
+  // posterior's summary is read (a recovery of a known G_s reads the intervals).
+  bool mcmc_byproducts = true;
   std::string compare;                   // "NUMERATOR/DENOMINATOR" sample names, or empty
   // Model nuisances held at a value instead of fitted (name, value): a sensitivity study,
   // e.g. G_s with the immersed boundary's offset held at 0.6 (surrogate/fixed_nuisance_model.hpp).

@@ -126,6 +126,7 @@ RecoveryReport recover_known_shear_moduli(const std::vector<SimulatedViscosity>&
   std::ostringstream quiet;  // the methods' own progress: the case line below says what matters
   CalibrationJobOptions job = o.job;  // each synthetic sample is the input's only one
   job.samples.clear();
+  job.mcmc_byproducts = false;  // the cases read the intervals only
   for (double truth : o.shear_moduli) {
     for (int r = 0; r < o.replicates; ++r) {
       SyntheticSampleOptions so = o.sample;

@@ -153,6 +153,27 @@ TEST(CalibrationJob, NamesAnIntervalEndThatTheModelsRangeCut) {
   EXPECT_GT(cut.samples[0].mcmc->shear_modulus_interval.lower, wide.samples[0].mcmc->shear_modulus_interval.lower);
 }
 
+// Without the MCMC's by-products the posterior's summary is the same (the by-products draw
+// from their own seeds), and bands, predictive check, saved draws and evidence are absent.
+TEST(CalibrationJob, MCMCByproductsCanBeLeftOutWithoutChangingTheInterval) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("mcmc");
+  o.samples = {"intact"};
+  std::ostringstream log;
+  const CalibrationReport full = calibrate_samples(input, synthetic_law(), o, log);
+  o.mcmc_byproducts = false;
+  const CalibrationReport lean = calibrate_samples(input, synthetic_law(), o, log);
+  const SampleReport &f = full.samples.at(0), &l = lean.samples.at(0);
+  ASSERT_TRUE(f.mcmc && l.mcmc);
+  EXPECT_EQ(l.mcmc->shear_modulus_median, f.mcmc->shear_modulus_median);
+  EXPECT_EQ(l.mcmc->shear_modulus_interval.lower, f.mcmc->shear_modulus_interval.lower);
+  EXPECT_EQ(l.mcmc->shear_modulus_interval.upper, f.mcmc->shear_modulus_interval.upper);
+  EXPECT_FALSE(f.bands.empty());
+  EXPECT_TRUE(f.predictive_check && f.evidence && f.saved_draws);
+  EXPECT_TRUE(l.bands.empty());
+  EXPECT_FALSE(l.predictive_check || l.evidence || l.saved_draws);
+}
+
 // --joint: one posterior over both samples, whose ratio --compare reports (the synthetic truth:
 // hardened 1.0 over intact 0.5 uN/m), and the brief report that says so.
 TEST(CalibrationJob, JointPosteriorGivesTheComparison) {
