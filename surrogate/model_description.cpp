@@ -40,9 +40,13 @@ std::string describe_family(const OffsetFamilyModel& family, const std::string& 
   std::string out =
       printf_string("  offset prior        normal(%.4g, %.4g) truncated to %.4g .. %.4g lattice spacings\n", c.mean,
                     c.sd, c.min, c.max);
-  if (const auto& box = family.box_correction())
+  if (const auto& box = family.box_correction()) {
     out += printf_string("  box correction      beta normal(%.4g, %.4g), integrated out (%s)\n", box->mean, box->sd,
                   box_source.c_str());
+    if (box->depends_on_ca())
+      out += printf_string("                      above Ca %.4g: + slope ln(Ca / %.4g), slope normal(%.4g, %.4g)\n",
+                           box->ca_knee, box->ca_knee, box->ca_slope, box->ca_slope_sd);
+  }
   const ParameterRange r = family.range();
   out += printf_string("  common range        phi %.4g .. %.4g, Ca %.4g .. %.4g, lambda %.4g .. %.4g\n", r.phi_min,
                        r.phi_max, r.ca_min, r.ca_max, r.lambda_min, r.lambda_max);

@@ -43,6 +43,11 @@ OffsetFamilyModel::OffsetFamilyModel(std::vector<OffsetFamilyMember> members, do
     throw std::invalid_argument("offset family: prior mean must lie between the first and last offsets");
   if (box_ && !(box_->sd > 0.0 && std::isfinite(box_->sd) && box_->mean > kBoxMin && box_->mean < kBoxMax))
     throw std::invalid_argument("offset family: the box correction's prior needs sd > 0 and a mean in (-0.5, 1)");
+  if (box_ && !(box_->ca_knee >= 0.0 && std::isfinite(box_->ca_knee) && std::isfinite(box_->ca_slope) &&
+                box_->ca_slope_sd >= 0.0 && std::isfinite(box_->ca_slope_sd)))
+    throw std::invalid_argument("offset family: the box correction's Ca knee and slope sd must be finite and not negative");
+  if (box_ && !box_->depends_on_ca() && (box_->ca_slope != 0.0 || box_->ca_slope_sd != 0.0))
+    throw std::invalid_argument("offset family: the box correction has a Ca slope but no Ca knee");
   range_ = members_.front().model->range();
   for (const auto& m : members_) {
     const ParameterRange r = m.model->range();
@@ -91,12 +96,16 @@ std::vector<double> OffsetFamilyModel::weights(double offset) const {
 
 std::vector<ModelNuisance> OffsetFamilyModel::nuisances() const { return {offset_}; }
 
-OffsetFamilyModel::Boxed OffsetFamilyModel::boxed(const ViscosityPrediction& p) const {
-  if (!box_) return {p, p.sd, 0.0};
-  Boxed b{with_box_correction(p, box_->mean), 0.0, 0.0};
+OffsetFamilyModel::Boxed OffsetFamilyModel::boxed(const ViscosityPrediction& p, double capillary_number) const {
+  if (!box_) return {p, p.sd, 0.0, 0.0};
+  const double lever = box_->lever(capillary_number);
+  Boxed b{with_box_correction(p, box_->at(capillary_number)), 0.0, 0.0, 0.0};
   b.sd_without_box = b.prediction.sd;
   b.box_gradient = b.prediction.eta_re * std::log(p.eta_re);
-  b.prediction.sd = std::hypot(b.sd_without_box, box_->sd * b.box_gradient);
+  b.slope_gradient = b.box_gradient * lever;
+  // Above the knee beta itself moves with ln Ca: d eta / d ln Ca gains d eta / d beta * ca_slope.
+  if (lever > 0.0) b.prediction.d_ln_ca += b.box_gradient * box_->ca_slope;
+  b.prediction.sd = std::hypot(b.sd_without_box, box_->sd * b.box_gradient, box_->ca_slope_sd * b.slope_gradient);
   return b;
 }
 
@@ -111,7 +120,7 @@ JointViscosityPrediction OffsetFamilyModel::joint_prediction(const std::vector<P
     std::vector<ViscosityPrediction> points;
     points.reserve(queries.size());
     for (std::size_t i = 0; i < queries.size(); ++i)
-      points.push_back(boxed(combined(w, [&](std::size_t k) { return member[k][i]; })).prediction);
+      points.push_back(boxed(combined(w, [&](std::size_t k) { return member[k][i]; }), queries[i].capillary_number).prediction);
     return without_correlation(std::move(points));
   }
   JointViscosityPrediction out;
@@ -140,12 +149,14 @@ JointViscosityPrediction OffsetFamilyModel::joint_prediction(const std::vector<P
         }
       },
       parallel);
-  Eigen::VectorXd sd(n), box_gradient(n);
+  Eigen::VectorXd sd(n), box_gradient(n), slope_gradient(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const Boxed b = boxed(combined(w, [&](std::size_t k) { return member[k].points[static_cast<std::size_t>(i)]; }));
+    const auto at = static_cast<std::size_t>(i);
+    const Boxed b = boxed(combined(w, [&](std::size_t k) { return member[k].points[at]; }), queries[at].capillary_number);
     out.points.push_back(b.prediction);
     sd(i) = b.sd_without_box;
     box_gradient(i) = b.box_gradient;
+    slope_gradient(i) = b.slope_gradient;
   }
   JointCovariance correlation;
   for (std::size_t k : {lower, lower + 1})
@@ -153,6 +164,7 @@ JointViscosityPrediction OffsetFamilyModel::joint_prediction(const std::vector<P
   out.covariance = std::move(correlation);
   out.covariance.scale(sd);
   if (box_) out.covariance.add_rank_one(box_gradient, box_->sd * box_->sd);
+  if (box_ && box_->ca_slope_sd > 0.0) out.covariance.add_rank_one(slope_gradient, box_->ca_slope_sd * box_->ca_slope_sd);
   return out;
 }
 

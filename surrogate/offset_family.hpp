@@ -13,7 +13,8 @@
 // Entered in each point's sd it would average away over a sample's points. The offset is
 // therefore a parameter of the calibration. The box correction enters linearly in ln eta, so it
 // is integrated out in closed form instead: the model predicts at beta's mean, and its joint
-// covariance (predict_joint) carries sd^2 g g^T with g_i = d eta_i / d beta = eta_i ln eta_re_i,
+// covariance (predict_joint) carries sd^2 g g^T with g_i = d eta_i / d beta = eta_i ln eta_re_i
+// (and, for a step that depends on Ca, slope_sd^2 h h^T with h_i = g_i ln(Ca_i / knee) above the knee),
 // an error that moves every point together and so reaches G_s's interval in full
 // (docs/calibration.md); predict's sd includes it. As a sampled parameter it had left the MCMC's
 // walkers stranded.
@@ -27,6 +28,7 @@
 // inside and one-sided ones at the ends: continuous with a continuous first derivative in c,
 // exact at the members and for predictions linear in c. Beyond the ends the end cubic goes on
 // (only a derivative step leaves [c_0, c_n]: the prior is truncated there).
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,9 +44,20 @@ struct OffsetFamilyMember {
 };
 
 // The box correction's prior: normal(mean, sd), its mean inside (-0.5, 1) (a factor on ln eta_re
-// between 0.5 and 2, far wider than any measured).
+// between 0.5 and 2, far wider than any measured). Optionally the step depends on Ca above a
+// knee, where the narrow gap's effect changes sign (docs/library.md, "The box twins"):
+// beta(Ca) = mean + ca_slope ln(Ca / ca_knee) for Ca > ca_knee, mean below it; the slope
+// normal(ca_slope, ca_slope_sd), independent of the level. ca_knee 0: one step for every Ca.
 struct BoxCorrectionPrior {
   double mean = 0.0, sd = 0.0;
+  double ca_knee = 0.0, ca_slope = 0.0, ca_slope_sd = 0.0;
+
+  bool depends_on_ca() const { return ca_knee > 0.0; }
+  // d beta / d ca_slope: ln(Ca / ca_knee) above the knee, else 0.
+  double lever(double capillary_number) const {
+    return depends_on_ca() && capillary_number > ca_knee ? std::log(capillary_number / ca_knee) : 0.0;
+  }
+  double at(double capillary_number) const { return mean + ca_slope * lever(capillary_number); }
 };
 
 class OffsetFamilyModel final : public ViscosityModel {
@@ -75,14 +88,15 @@ class OffsetFamilyModel final : public ViscosityModel {
   // where their correlation is needed.
   JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& queries, const NuisanceValues& values,
                                             CovarianceForm form) const override;
-  // A prediction at the box correction's mean, its sd with beta's share (sd_without_box without
-  // it), and d eta / d beta.
+  // A prediction at Ca with the box correction at its prior mean, its sd with the correction's
+  // share (sd_without_box without it), d eta / d beta and d eta / d ca_slope.
   struct Boxed {
     ViscosityPrediction prediction;
     double sd_without_box = 0.0;
     double box_gradient = 0.0;
+    double slope_gradient = 0.0;
   };
-  Boxed boxed(const ViscosityPrediction& p) const;
+  Boxed boxed(const ViscosityPrediction& p, double capillary_number) const;
   // The members' predictions weighted by w (weights()); member(k) is asked only where w[k] != 0.
   ViscosityPrediction combined(const std::vector<double>& w,
                                const std::function<ViscosityPrediction(std::size_t)>& member) const;

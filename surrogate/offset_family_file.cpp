@@ -19,7 +19,12 @@ nlohmann::json surrogate_family_to_json(const std::vector<SurrogateFamilyMember>
   j["parameter"] = "offset c of the immersed boundary in lattice spacings: each member is the surrogate of the "
                    "library's runs moved to their effective volume fraction at that c (rbcal library effective-phi)";
   j["prior"] = {{"mean", prior_mean}, {"sd", prior_sd}};
-  if (box) j["box_correction"] = {{"mean", box->prior.mean}, {"sd", box->prior.sd}, {"source", box->source}};
+  if (box) {
+    j["box_correction"] = {{"mean", box->prior.mean}, {"sd", box->prior.sd}, {"source", box->source}};
+    if (box->prior.depends_on_ca())
+      j["box_correction"].update({{"ca_knee", box->prior.ca_knee}, {"ca_slope", box->prior.ca_slope},
+                                  {"ca_slope_sd", box->prior.ca_slope_sd}});
+  }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& m : members) {
     nlohmann::json s = surrogate_to_json(m.surrogate);
@@ -35,11 +40,18 @@ OffsetFamilyModel surrogate_family_from_json(const nlohmann::json& j, const std:
   const formats::FieldReader r(j, source);
   r.expect_schema(formats::kSurrogateFamilySchema);
   r.only_known_keys("", {"schema", "parameter", "prior", "box_correction", "members", "provenance"});
-  r.only_known_keys("box_correction", {"mean", "sd", "source"});
+  r.only_known_keys("box_correction", {"mean", "sd", "source", "ca_knee", "ca_slope", "ca_slope_sd"});
   const double mean = r.number("prior.mean");
   const double sd = r.positive("prior.sd");
   std::optional<BoxCorrectionPrior> box;
-  if (r.find("box_correction")) box = BoxCorrectionPrior{r.number("box_correction.mean"), r.positive("box_correction.sd")};
+  if (r.find("box_correction")) {
+    box = BoxCorrectionPrior{r.number("box_correction.mean"), r.positive("box_correction.sd")};
+    if (r.find("box_correction.ca_knee")) {
+      box->ca_knee = r.positive("box_correction.ca_knee");
+      box->ca_slope = r.number("box_correction.ca_slope");
+      box->ca_slope_sd = r.non_negative("box_correction.ca_slope_sd");
+    }
+  }
   const nlohmann::json& list = r.require("members");
   if (!list.is_array() || list.size() < 2) r.fail("members", "must be an array of at least two members");
   std::vector<OffsetFamilyMember> members;

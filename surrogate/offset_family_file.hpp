@@ -5,7 +5,8 @@
 //   {"schema": "rbcal.surrogate_family/1",
 //    "parameter": "...",                       (what the offset is; informational)
 //    "prior": {"mean": 0.75, "sd": 0.15},      (lattice spacings; truncated to the members)
-//    "box_correction": {"mean": ..., "sd": ..., "source": "..."},   (optional; beta)
+//    "box_correction": {"mean": ..., "sd": ..., "source": "...",    (optional; beta)
+//                       "ca_knee": ..., "ca_slope": ..., "ca_slope_sd": ...},  (optional; its Ca dependence)
 //    "members": [{"offset": 0.45, "surrogate": {rbcal.surrogate/1}}, ...],
 //    "provenance": {...}}
 // load_viscosity_model reads either schema, so a calibration takes either file.

@@ -49,6 +49,7 @@ class CorrelatedMember final : public ViscosityModel {
     ViscosityPrediction p;
     p.eta_re = std::exp(4.0 * phi * (1.0 + 0.2 * offset_)) * (1.0 - 0.05 * std::log(ca)) + 0.0 * lambda;
     p.sd = 0.02 * p.eta_re * (1.0 + offset_);
+    p.d_ln_ca = -0.05 * std::exp(4.0 * phi * (1.0 + 0.2 * offset_));
     return p;
   }
   JointViscosityPrediction joint_prediction(const std::vector<ParameterPoint>& q, const NuisanceValues& /*nuisance*/,
@@ -223,6 +224,61 @@ TEST(OffsetFamily, JointCovarianceCorrelatesAsItsMembersAndCarriesTheBoxToEveryP
   }
 }
 
+// A box step that depends on Ca: beta(Ca) = mean below the knee, mean + slope ln(Ca / knee)
+// above it; d eta / d ln Ca carries the step's own Ca dependence; the slope's sd adds
+// slope_sd^2 h h^T with h_i = g_i ln(Ca_i / knee), nothing for points below the knee.
+TEST(OffsetFamily, BoxStepThatDependsOnCa) {
+  std::vector<OffsetFamilyMember> members;
+  for (double c : {0.5, 0.75, 1.0}) members.push_back({c, std::make_shared<CorrelatedMember>(c)});
+  BoxCorrectionPrior box{0.09, 0.03};
+  box.ca_knee = 1.0;
+  box.ca_slope = -0.1;
+  box.ca_slope_sd = 0.04;
+  const OffsetFamilyModel plain(members, 0.75, 0.15);
+  const OffsetFamilyModel stepped(members, 0.75, 0.15, box);
+  const OffsetFamilyModel level(members, 0.75, 0.15, BoxCorrectionPrior{0.09, 0.03});
+  // Below the knee: the one-step model exactly.
+  const ViscosityPrediction low = stepped.predict(0.3, 0.5, 5.0), low_level = level.predict(0.3, 0.5, 5.0);
+  EXPECT_EQ(low.eta_re, low_level.eta_re);
+  EXPECT_EQ(low.sd, low_level.sd);
+  EXPECT_EQ(low.d_ln_ca, low_level.d_ln_ca);
+  // Above it: the step at beta(8) = 0.09 - 0.1 ln 8.
+  const ViscosityPrediction raw = plain.predict(0.3, 8.0, 5.0), high = stepped.predict(0.3, 8.0, 5.0);
+  const double beta8 = 0.09 - 0.1 * std::log(8.0);
+  EXPECT_NEAR(high.eta_re, std::pow(raw.eta_re, 1.0 + beta8), 1e-13);
+  const double g = high.eta_re * std::log(raw.eta_re), h = g * std::log(8.0);
+  const double sd_without = (1.0 + beta8) * std::pow(raw.eta_re, beta8) * raw.sd;
+  EXPECT_NEAR(high.sd, std::sqrt(sd_without * sd_without + 0.03 * 0.03 * g * g + 0.04 * 0.04 * h * h), 1e-13);
+  // d eta / d ln Ca against a central difference of the prediction, across the members' own
+  // Ca dependence and the step's.
+  const double e = 1e-5;
+  const double numeric =
+      (stepped.predict(0.3, 8.0 * std::exp(e), 5.0).eta_re - stepped.predict(0.3, 8.0 * std::exp(-e), 5.0).eta_re) / (2 * e);
+  EXPECT_NEAR(high.d_ln_ca, numeric, 1e-7);
+  EXPECT_LT(high.d_ln_ca, (1.0 + beta8) * std::pow(raw.eta_re, beta8) * raw.d_ln_ca);  // the step thins it further
+  // The joint covariance: the slope's share only between points above the knee.
+  const std::vector<ParameterPoint> q = {{0.2, 0.5, 5.0}, {0.3, 4.0, 5.0}, {0.4, 8.0, 5.0}};
+  const Eigen::MatrixXd with_slope = stepped.predict_joint(q).covariance.dense();
+  BoxCorrectionPrior exact_slope = box;
+  exact_slope.ca_slope_sd = 0.0;
+  const Eigen::MatrixXd without_slope = OffsetFamilyModel(members, 0.75, 0.15, exact_slope).predict_joint(q).covariance.dense();
+  const JointViscosityPrediction at = stepped.predict_joint(q), raw_at = plain.predict_joint(q);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    EXPECT_NEAR(with_slope(i, i), at.points[i].sd * at.points[i].sd, 1e-13);
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const auto lever = [&](std::size_t k) { return std::max(0.0, std::log(q[k].capillary_number)); };
+      const double h_i = at.points[i].eta_re * std::log(raw_at.points[i].eta_re) * lever(i);
+      const double h_j = at.points[j].eta_re * std::log(raw_at.points[j].eta_re) * lever(j);
+      EXPECT_NEAR(with_slope(i, j) - without_slope(i, j), 0.04 * 0.04 * h_i * h_j, 1e-13) << i << " " << j;
+    }
+  }
+  EXPECT_EQ(with_slope(0, 2), without_slope(0, 2));  // the point below the knee shares no slope error
+  // A slope without a knee is refused.
+  BoxCorrectionPrior no_knee{0.09, 0.03};
+  no_knee.ca_slope = -0.1;
+  EXPECT_THROW(OffsetFamilyModel(members, 0.75, 0.15, no_knee), std::invalid_argument);
+}
+
 // The one range rule: bounds included, each axis on its own, NaN outside.
 TEST(ParameterRange, ContainsItsBoundsAndNothingBeyond) {
   const ParameterRange r{0.05, 0.62, 0.01, 3.2, 0.1, 10.0};
@@ -298,6 +354,19 @@ TEST(OffsetFamilyFile, RoundTripsAndIsToldFromASingleSurrogate) {
               1e-12);
   EXPECT_EQ(boxed.predict(0.25, 0.2, 5.0, {{"offset_c", 0.6}}).eta_re,
             boxed.predict_joint({{0.25, 0.2, 5.0}}, {{"offset_c", 0.6}}).points[0].eta_re);
+
+  // A box step that depends on Ca is kept with its knee and slope.
+  BoxCorrectionRecord stepped{{0.09, 0.03}, "twins at Ca 0.1-8"};
+  stepped.prior.ca_knee = 1.0;
+  stepped.prior.ca_slope = -0.1;
+  stepped.prior.ca_slope_sd = 0.04;
+  save_surrogate_family(members, 0.75, 0.15, dir / "stepped.json", stepped);
+  const OffsetFamilyModel stepped_back = load_surrogate_family(dir / "stepped.json");
+  ASSERT_TRUE(stepped_back.box_correction());
+  EXPECT_DOUBLE_EQ(stepped_back.box_correction()->ca_knee, 1.0);
+  EXPECT_DOUBLE_EQ(stepped_back.box_correction()->ca_slope, -0.1);
+  EXPECT_DOUBLE_EQ(stepped_back.box_correction()->ca_slope_sd, 0.04);
+  EXPECT_FALSE(rbcal::formats::read_json_file(dir / "boxed.json")["box_correction"].contains("ca_knee"));
 
   // A bad field inside a member is named with the member's path.
   nlohmann::json j = rbcal::formats::read_json_file(dir / "family.json");
