@@ -21,8 +21,9 @@ import shutil
 import subprocess
 import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
-RBCAL = os.environ.get("RBCAL", os.path.join(ROOT, "build", "bin", "rbcal"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from evaluate_model import RBCAL, ROOT, evaluate
+
 out = os.path.abspath(sys.argv[1])
 low, knee, slope = (float(v) for v in sys.argv[2:5])
 beyond = float(sys.argv[5]) if len(sys.argv) > 5 else 0.034
@@ -63,19 +64,4 @@ family = json.load(open(family_file))
 family["box_correction"] = {"mean": beyond, "sd": sd, "source": "trial: the step beyond the 16a gap, set by hand"}
 json.dump(family, open(family_file, "w"), indent=1)
 
-for tier in ("n8", "n12"):
-    anchors = sorted(glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", f"{tier}_*.result.json")))
-    with open(os.path.join(out, f"recover_{tier}.txt"), "w") as log:
-        subprocess.run([RBCAL, "recover", *anchors, "--surrogate", family_file, "--replicates", "10",
-                        "-o", os.path.join(out, f"recover_{tier}.json")], check=True, stdout=log, stderr=subprocess.STDOUT)
-with open(os.path.join(out, "calibrate.txt"), "w") as log:
-    subprocess.run([RBCAL, "calibrate", "--surrogate", family_file, "--no-plots", "-o", os.path.join(out, "report")],
-                   check=True, stdout=log, stderr=subprocess.STDOUT, cwd=ROOT)
-for tier in ("n8", "n12"):
-    recovery = json.load(open(os.path.join(out, f"recover_{tier}.json")))
-    for name, m in recovery["coverage"].items():
-        print(f"recovery {tier} ({len(recovery['points'])} runs) {name}: {m['covered']} of {m['asked']}, "
-              f"estimate / truth {m['bias_factor']:.2f} +- {m['bias_factor_se']:.2f}")
-for line in open(os.path.join(out, "calibrate.txt")):
-    if line.strip().startswith(("G_s", "offset_c")):
-        print("main job:", line.strip())
+evaluate(family_file, out)
