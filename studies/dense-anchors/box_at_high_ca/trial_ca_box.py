@@ -12,6 +12,8 @@ dependence of the step only.
 
 Usage, from the repository root (minutes: one model build, one recovery, one calibration):
   python3 studies/dense-anchors/box_at_high_ca/trial_ca_box.py OUT LOW KNEE SLOPE [BEYOND SD]
+  python3 studies/dense-anchors/box_at_high_ca/trial_ca_box.py OUT CA:BETA,CA:BETA,... [BEYOND SD]
+(the second form: measured steps, linear in ln Ca between them and constant beyond).
 """
 import glob
 import json
@@ -25,13 +27,26 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from evaluate_model import RBCAL, ROOT, evaluate
 
 out = os.path.abspath(sys.argv[1])
-low, knee, slope = (float(v) for v in sys.argv[2:5])
-beyond = float(sys.argv[5]) if len(sys.argv) > 5 else 0.034
-sd = float(sys.argv[6]) if len(sys.argv) > 6 else 0.059
+if ":" in sys.argv[2]:  # a table CA:BETA,CA:BETA,... (linear in ln Ca, constant beyond its ends)
+    table = sorted((float(a), float(b)) for a, b in (item.split(":") for item in sys.argv[2].split(",")))
+    rest = sys.argv[3:]
+else:
+    low, knee, slope = (float(v) for v in sys.argv[2:5])
+    table = None
+    rest = sys.argv[5:]
+beyond = float(rest[0]) if len(rest) > 0 else 0.034
+sd = float(rest[1]) if len(rest) > 1 else 0.059
 
 
 def beta(ca):
-    return low if ca <= knee else low + slope * math.log(ca / knee)
+    if table is None:
+        return low if ca <= knee else low + slope * math.log(ca / knee)
+    if ca <= table[0][0]:
+        return table[0][1]
+    for (c0, b0), (c1, b1) in zip(table, table[1:]):
+        if ca <= c1:
+            return b0 + (b1 - b0) * math.log(ca / c0) / math.log(c1 / c0)
+    return table[-1][1]
 
 
 os.makedirs(out, exist_ok=True)
@@ -53,7 +68,7 @@ for tier in ("n6", "n8"):
         r["eta_re_sem"] *= (1.0 + b) * r["eta_re"] / eta
         json.dump(case, open(f, "w"), indent=1)
     runs.append(dst)
-recipe["about"] = f"trial: runs moved to the 16a gap by beta(Ca) = {low} (Ca <= {knee}), {low} + {slope} ln(Ca / {knee}) above"
+recipe["about"] = f"trial: runs moved to the 16a gap by beta(Ca) = {sys.argv[2:]}"
 recipe["runs"] = runs
 recipe.pop("box_correction", None)
 json.dump(recipe, open(os.path.join(out, "recipe.json"), "w"), indent=1)
