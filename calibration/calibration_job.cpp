@@ -163,6 +163,7 @@ class SampleCalibration {
   DirectFitOptions fit_options() const {
     DirectFitOptions fo;
     fo.setup = o_.setup;
+    fo.hold_coverable_points = o_.hold_coverable_points;
     return fo;
   }
 
@@ -192,6 +193,8 @@ class SampleCalibration {
       if (r.direct->model_edge != ModelEdge::none) r.warnings.push_back("direct fit: " + r.direct->model_edge_reason);
       if (!r.direct->point_set_settled)
         r.warnings.push_back(std::string("direct fit: ") + kPointSetUnsettled);
+      if (static_cast<int>(r.direct->used_points().size()) < r.direct->coverable_points)
+        r.warnings.push_back(shed_points_warning(r));
       if (r.direct->has_interval_estimate())
         if (auto w = extrapolation_warning("direct fit", r.direct->used_points(), r.direct->plasma_viscosity,
                                            o_.setup.cell_radius,
@@ -200,6 +203,29 @@ class SampleCalibration {
     } catch (const std::exception& e) {
       r.warnings.push_back(std::string("direct fit failed: ") + e.what());
     }
+  }
+
+  // A fit that left out points one G_s could have kept: the same fit holding them, side by side.
+  std::string shed_points_warning(const SampleReport& r) const {
+    std::ostringstream w;
+    w << "direct fit: it fitted " << r.direct->used_points().size() << " of the " << r.direct->coverable_points
+      << " points one G_s keeps inside the model's Ca range; holding them all (--hold-points) gives ";
+    try {
+      DirectFitOptions fo = fit_options();
+      fo.hold_coverable_points = true;
+      const DirectFitResult held = fit_direct(r.sample, model_, fo);
+      w << "G_s " << shown(held.shear_modulus * kMicro) << " uN/m";
+      if (held.model_edge != ModelEdge::none)
+        w << " as an " << limit_kind(held.model_edge) << " limit (the data lie "
+          << (held.model_edge == ModelEdge::largest_ca ? "below" : "above") << " the model at its Ca edge)";
+      else if (held.covariance_ok)
+        w << " (95 % " << shown(held.shear_modulus_interval.lower * kMicro) << "-"
+          << shown(held.shear_modulus_interval.upper * kMicro) << ")";
+    } catch (const std::exception& e) {
+      w << "no fit (" << e.what() << ")";
+    }
+    w << ": the estimate rests on the points the fit kept";
+    return w.str();
   }
 
   void mcmc(SampleReport& r) const {
@@ -342,6 +368,7 @@ nlohmann::json CalibrationJobOptions::to_json() const {
           {"phi_max", phi_max},
           {"min_shear_rate_per_s", min_shear_rate},
           {"keep_out_of_hematocrit_order", keep_out_of_hematocrit_order},
+          {"hold_coverable_points", hold_coverable_points},
           {"sampler", to_string(sampler.sampler)},
           {"seed", sampler.seed},
           {"threads", sampler.threads},

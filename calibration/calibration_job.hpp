@@ -48,6 +48,11 @@ struct CalibrationJobOptions {
   // Points whose eta_re is not above the next lower hematocrit's curve are left out and
   // named (calibration/hematocrit_order.hpp) unless this is set.
   bool keep_out_of_hematocrit_order = false;
+  // The direct fit (and the MCMC's start, whose points the MCMC keeps inside the range) hold the
+  // largest set of points one G_s keeps inside the model's Ca range
+  // (DirectFitOptions::hold_coverable_points; --hold-points). Without it, a direct fit that
+  // leaves out points one G_s could keep is refitted so, and a warning gives both.
+  bool hold_coverable_points = false;
   // seed, threads, steps, chains, walkers (0: automatic_walkers, 8 per parameter, at least 16)
   McmcOptions sampler = [] {
     McmcOptions o;

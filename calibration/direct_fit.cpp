@@ -222,6 +222,30 @@ std::pair<double, double> ln_shear_modulus_keeping_ca_inside(const ViscosityObse
   return {std::log(k * rate_max / range.ca_max), std::log(k * rate_min / range.ca_min)};
 }
 
+// The largest sets of points that one G_s keeps inside the model's Ca range together: for
+// each covered point (phi inside the model's range) as the lowest shear rate, every covered
+// point whose rate is at most ca_max / ca_min times larger. Distinct sets, largest count only.
+std::vector<std::vector<bool>> largest_coverable_sets(const std::vector<RelativeViscosityPoint>& points,
+                                                      const surrogate::ParameterRange& range) {
+  const double span = range.ca_max / range.ca_min;
+  std::vector<std::vector<bool>> best;
+  int most = 0;
+  for (const auto& low : points) {
+    if (!range.contains_phi(low.phi)) continue;
+    std::vector<bool> set(points.size());
+    int count = 0;
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const auto& p = points[j];
+      set[j] = range.contains_phi(p.phi) && p.shear_rate >= low.shear_rate && p.shear_rate <= low.shear_rate * span;
+      count += set[j] ? 1 : 0;
+    }
+    if (count > most) best.clear();
+    if (count >= most && std::find(best.begin(), best.end(), set) == best.end()) best.push_back(set);
+    most = std::max(most, count);
+  }
+  return best;
+}
+
 ceres::LossFunction* make_loss(const DirectFitOptions& options) {
   switch (options.loss) {
     case RobustLoss::huber: return new ceres::HuberLoss(options.loss_scale);
@@ -290,6 +314,7 @@ class DirectFit {
         settle(now_inside, summary, problem, normalisation_blocks, free_blocks);
         break;
       }
+      if (held_) continue;  // the set stays; the next round bounds G_s at the new eta0
       if (first_set_.empty()) first_set_ = used_;
       used_ = now_inside;
     }
@@ -310,6 +335,7 @@ class DirectFit {
   }
 
   static constexpr double kBoundTolerance = 1e-6;
+  static constexpr double kEdgeMargin = 1e-9;  // in ln G_s
 
   int rounds() const { return std::max(1, options_.max_selection_rounds); }
 
@@ -337,6 +363,44 @@ class DirectFit {
     hi_ = ln_gs_hi_;
     edge_ = {ln_gs_lo_, ln_gs_hi_};
     used_ = select_inside(obs_, sample_.points, x_);
+    const std::vector<std::vector<bool>> coverable = largest_coverable_sets(sample_.points, range_);
+    if (!coverable.empty())
+      result_.coverable_points = static_cast<int>(std::count(coverable.front().begin(), coverable.front().end(), true));
+    if (options_.hold_coverable_points) hold_largest_coverable_set(coverable);
+  }
+
+  // The held set (options_.hold_coverable_points): of the largest sets one G_s can keep inside
+  // the Ca range, the one with the smallest mean squared weighted residual at the best node of
+  // a scan of ln G_s over its window; the start moves to that node. Not held when no such
+  // window meets the G_s bounds.
+  void hold_largest_coverable_set(const std::vector<std::vector<bool>>& coverable) {
+    ViscosityObservation at = obs_;
+    at.plasma_viscosity = std::exp(x_.ln_plasma_viscosity);
+    const int n = std::max(2, options_.start_grid_points);
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& set : coverable) {
+      const auto window = ln_shear_modulus_keeping_ca_inside(at, sample_.points, set, range_);
+      const double lo = std::max(ln_gs_lo_, window.first + kEdgeMargin);
+      const double hi = std::min(ln_gs_hi_, window.second - kEdgeMargin);
+      if (!(lo <= hi)) continue;
+      FitParameters x = x_;
+      for (int k = 0; k < n; ++k) {
+        x.ln_shear_modulus = lo + (hi - lo) * k / (n - 1);
+        double sum = 0.0;
+        int count = 0;
+        for (std::size_t i = 0; i < set.size(); ++i)
+          if (set[i]) {
+            sum += std::pow(residuals_[i](x), 2);
+            ++count;
+          }
+        if (count > 0 && sum / count < best) {
+          best = sum / count;
+          used_ = set;
+          x_.ln_shear_modulus = x.ln_shear_modulus;
+        }
+      }
+    }
+    held_ = std::isfinite(best);
   }
 
   // A fit that carries every point out of the model's Ca range means that the data lie beyond
@@ -358,13 +422,17 @@ class DirectFit {
     }
     lo_ = ln_gs_lo_;
     hi_ = ln_gs_hi_;
-    if (!edge_fit_) return;
+    if (!edge_fit_ && !held_) return;
     ViscosityObservation at = obs_;
     at.plasma_viscosity = std::exp(x_.ln_plasma_viscosity);
     edge_ = ln_shear_modulus_keeping_ca_inside(at, sample_.points, used_, range_);
-    if (!(edge_.first <= edge_.second) || std::count(used_.begin(), used_.end(), true) < fitted_to_data_) {
+    if (edge_fit_ && (!(edge_.first <= edge_.second) || std::count(used_.begin(), used_.end(), true) < fitted_to_data_)) {
       used_ = first_set_;
       edge_ = ln_shear_modulus_keeping_ca_inside(at, sample_.points, used_, range_);
+    }
+    if (held_) {  // strictly inside, so that rounding keeps the held points in
+      edge_.first += kEdgeMargin;
+      edge_.second -= kEdgeMargin;
     }
     if (edge_.first <= edge_.second) {
       lo_ = std::max(lo_, edge_.first);
@@ -486,14 +554,15 @@ class DirectFit {
 
   // An edge fit that ends on the edge is a limit, not an estimate, and says which.
   void diagnose_edge_fit() {
-    if (!edge_fit_) return;
+    if (!edge_fit_ && !held_) return;
     const bool low_edge = x_.ln_shear_modulus - edge_.first < kBoundTolerance;
     const bool high_edge = edge_.second - x_.ln_shear_modulus < kBoundTolerance;
     if (!low_edge && !high_edge) return;
     result_.model_edge = low_edge ? ModelEdge::largest_ca : ModelEdge::smallest_ca;
     std::ostringstream what;
     what << "no G_s fits the data inside the model's Ca range " << range_.ca_min << " to " << range_.ca_max
-         << ": the best fit carries every point out of it, so G_s is held where the "
+         << ": the best fit carries " << (edge_fit_ ? "every point" : "points it could hold")
+         << " out of it, so G_s is held where the "
          << (low_edge ? "highest" : "lowest") << " shear rate used reaches Ca " << (low_edge ? range_.ca_max : range_.ca_min)
          << "; read G_s = " << std::exp(x_.ln_shear_modulus) * kMicro << " uN/m as an "
          << limit_kind(result_.model_edge) << " limit, not an estimate (the data lie "
@@ -589,6 +658,7 @@ class DirectFit {
   std::vector<WeightedResidual> residuals_;
   std::vector<bool> used_, first_set_;  // the points fitted; the first round's set
   bool edge_fit_ = false;
+  bool held_ = false;  // options_.hold_coverable_points, and a set could be held
   double lo_ = 0.0, hi_ = 0.0;  // ln G_s bounds of the last solve
   std::pair<double, double> edge_;
   DirectFitResult result_;

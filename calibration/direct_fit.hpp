@@ -53,6 +53,16 @@ struct DirectFitOptions {
   double interval_level = 0.95;
   int start_grid_points = 41;   // ln-uniform scan of G_s for the starting point
   int max_selection_rounds = 5;  // refits while the set of points inside the model's range changes
+  // Hold the largest set of points that one G_s can keep inside the model's Ca range (every
+  // point whose phi it covers, when their shear rates span less than ca_max / ca_min), and
+  // bound G_s to keep them there, instead of fitting whichever points lie inside at the
+  // optimum: a fit may then not shed points that a model of the wrong shape fails to fit.
+  // Where the bound holds G_s, the fit is a limit (model_edge). It errs the other way where the
+  // data reach beyond the model's Ca range at the true G_s (stiff cells at the lowest shear
+  // rates): the bound then holds G_s away from the truth. false (the default): the points
+  // inside at the optimum, refitted while that set changes (max_selection_rounds), and
+  // coverable_points says when that left out points one G_s could have kept.
+  bool hold_coverable_points = false;
   // Multiply the covariance by chi^2 / dof (when the stated errors are not trusted).
   bool scale_covariance_by_reduced_chi_square = false;
 };
@@ -103,6 +113,9 @@ struct DirectFitResult {
   std::vector<NuisanceEstimate> nuisances;  // the model's nuisance parameters, as fitted
   std::vector<FittedPoint> points;
   bool point_set_settled = true;  // false: kPointSetUnsettled (also in messages)
+  // The most points one G_s keeps inside the model's range together; more than the used points:
+  // the fit left out points that another G_s would have kept (a shed set, not a forced one).
+  int coverable_points = 0;
   std::vector<std::string> messages;
   std::string solver_report;  // Ceres' brief report of the last solve
 

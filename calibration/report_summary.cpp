@@ -89,6 +89,8 @@ json direct_json(const DirectFitResult& d) {
             {"converged", d.converged},
             {"covariance_ok", d.covariance_ok},
             {"at_bound", d.at_bound},
+            {"points_used", d.used_points().size()},
+            {"coverable_points", d.coverable_points},  // more than points_used: points left out by the fit
             {"model_edge", d.model_edge == ModelEdge::none          ? "none"
                            : d.model_edge == ModelEdge::largest_ca ? "largest_ca (G_s is an upper limit)"
                                                                    : "smallest_ca (G_s is a lower limit)"},

@@ -56,7 +56,7 @@ std::string command_line(const CalibrateOptions& o) {
   line << " --lambda " << j.setup.lambda << (j.setup.fit_lambda ? "" : " --fix-lambda") << " --lambda-prior-sd "
        << j.setup.lambda_prior_log_sd << " --cell-radius-um "
        << o.cell_radius_um << " --plateau-min-shear-rate " << j.plasma.plateau_min_shear_rate << " --phi-max "
-       << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << " --seed " << j.sampler.seed << " --sampler " << o.sampler << " --chains " << j.sampler.chains << " --walkers "
+       << j.phi_max << " --min-shear-rate " << j.min_shear_rate << (j.keep_out_of_hematocrit_order ? " --keep-out-of-order" : "") << (j.hold_coverable_points ? " --hold-points" : "") << " --seed " << j.sampler.seed << " --sampler " << o.sampler << " --chains " << j.sampler.chains << " --walkers "
        << j.sampler.walkers << " --mcmc-max-steps " << j.sampler.max_steps
        << (j.compare.empty() ? "" : " --compare " + j.compare) << " -o " << o.report
        << (o.no_plots ? " --no-plots" : "");
@@ -113,6 +113,9 @@ void add_calibrate_command(CLI::App& app) {
   c->add_flag("--keep-out-of-order", j.keep_out_of_hematocrit_order,
               "Keep points whose viscosity is not above the next lower hematocrit's at the same shear rate "
               "(left out and reported by default)");
+  c->add_flag("--hold-points", j.hold_coverable_points,
+              "Fit the largest set of points one G_s keeps inside the model's Ca range, G_s bounded to keep them "
+              "there (a limit where the bound holds), instead of the points inside at the optimum");
   c->add_option("--seed", j.sampler.seed, "Seed of the MCMC, bands and comparison (same seed, same numbers)")
       ->capture_default_str();
   c->add_option("--threads", j.sampler.threads,

@@ -36,6 +36,7 @@ struct RecoverOptions {
   unsigned long long seed = 1;
   std::optional<double> offset;  // empty: the offset the model's runs were mapped with
   std::string method = "all";
+  bool hold_points = false;
   std::string output;
   std::string samples_folder;
   double required_coverage = 0.0;
@@ -121,6 +122,7 @@ void run_recover(const RecoverOptions& o) {
   r.sample.relative_noise = o.noise;
   r.sample.seed = o.seed;
   r.job.method = o.method;
+  r.job.hold_coverable_points = o.hold_points;
   r.samples_folder = o.samples_folder;
   r.job.surrogate_file = o.surrogate;
   r.job.setup.cell_radius = r.sample.cell_radius;
@@ -199,6 +201,9 @@ void add_recover_command(CLI::App& app) {
   cmd->add_option("--method", o->method, "alpha, direct, mcmc or all")
       ->capture_default_str()
       ->check(CLI::IsMember({"alpha", "direct", "mcmc", "all"}));
+  cmd->add_flag("--hold-points", o->hold_points,
+                "Fit each sample as `rbcal calibrate --hold-points` does (the largest set of points one G_s keeps "
+                "inside the model's Ca range)");
   cmd->add_option("-o,--output", o->output, "Also write the cases and coverage as JSON (rbcal.recovery/1)");
   cmd->add_option("--write-samples", o->samples_folder,
                   "Also write each synthetic sample to this folder as a rheometer CSV (gs<G_s>_seed<seed>.csv), "

@@ -153,6 +153,36 @@ TEST(CalibrationJob, NamesAnIntervalEndThatTheModelsRangeCut) {
   EXPECT_GT(cut.samples[0].mcmc->shear_modulus_interval.lower, wide.samples[0].mcmc->shear_modulus_interval.lower);
 }
 
+// A direct fit that leaves out points one G_s could keep inside the model's Ca range (here the
+// highest shear rates, past a range that ends at Ca 0.3 where the truth puts them at 0.62) is
+// refitted holding them, and a warning gives both; with --hold-points the fit holds them itself.
+TEST(CalibrationJob, SaysWhenTheDirectFitLeftOutPointsItCouldHaveKept) {
+  const CalibrationInput input = read_calibration_input(RBCAL_CALIBRATION_DATA "/synthetic_rheometer.csv");
+  CalibrationJobOptions o = options("direct");
+  o.samples = {"intact"};
+  AnalyticViscosityModel narrow = synthetic_law();
+  narrow.box.ca_max = 0.3;
+  const auto shed_warning = [](const SampleReport& r) {
+    for (const auto& w : r.warnings)
+      if (w.find("points one G_s keeps inside the model's Ca range; holding them all (--hold-points) gives G_s") !=
+          std::string::npos)
+        return true;
+    return false;
+  };
+  std::ostringstream log;
+  const CalibrationReport free_set = calibrate_samples(input, narrow, o, log);
+  ASSERT_TRUE(free_set.samples.at(0).direct);
+  const DirectFitResult& shed = *free_set.samples[0].direct;
+  EXPECT_LT(static_cast<int>(shed.used_points().size()), shed.coverable_points);
+  EXPECT_TRUE(shed_warning(free_set.samples[0]));
+
+  o.hold_coverable_points = true;
+  const CalibrationReport held = calibrate_samples(input, narrow, o, log);
+  ASSERT_TRUE(held.samples.at(0).direct);
+  EXPECT_EQ(static_cast<int>(held.samples[0].direct->used_points().size()), held.samples[0].direct->coverable_points);
+  EXPECT_FALSE(shed_warning(held.samples[0]));
+}
+
 // Without the MCMC's by-products the posterior's summary is the same (the by-products draw
 // from their own seeds), and bands, predictive check, saved draws and evidence are absent.
 TEST(CalibrationJob, MCMCByproductsCanBeLeftOutWithoutChangingTheInterval) {

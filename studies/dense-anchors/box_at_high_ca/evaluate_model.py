@@ -9,6 +9,8 @@ import subprocess
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
 RBCAL = os.environ.get("RBCAL", os.path.join(ROOT, "build", "bin", "rbcal"))
+# Further options of both the recovery and the calibration, e.g. FIT_FLAGS=--hold-points.
+FIT_FLAGS = os.environ.get("FIT_FLAGS", "").split()
 
 
 def evaluate(family_file, out):
@@ -16,10 +18,10 @@ def evaluate(family_file, out):
         anchors = sorted(glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", f"{tier}_*.result.json")))
         with open(os.path.join(out, f"recover_{tier}.txt"), "w") as log:
             subprocess.run([RBCAL, "recover", *anchors, "--surrogate", family_file, "--replicates", "10",
-                            "-o", os.path.join(out, f"recover_{tier}.json")], check=True, stdout=log,
+                            "-o", os.path.join(out, f"recover_{tier}.json"), *FIT_FLAGS], check=True, stdout=log,
                            stderr=subprocess.STDOUT)
     with open(os.path.join(out, "calibrate.txt"), "w") as log:
-        subprocess.run([RBCAL, "calibrate", "--surrogate", family_file, "--no-plots", "-o", os.path.join(out, "report")],
+        subprocess.run([RBCAL, "calibrate", "--surrogate", family_file, "--no-plots", "-o", os.path.join(out, "report"), *FIT_FLAGS],
                        check=True, stdout=log, stderr=subprocess.STDOUT, cwd=ROOT)
     for tier in ("n8", "n12"):
         recovery = json.load(open(os.path.join(out, f"recover_{tier}.json")))
