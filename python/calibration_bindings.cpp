@@ -61,6 +61,7 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
                       const std::vector<std::string>& samples, double lambda, bool fit_lambda, double lambda_prior_sd,
                       double cell_radius_um,
                       double plateau_min_shear_rate, double phi_max, double min_shear_rate, bool keep_out_of_order,
+                      bool hold_points,
                       std::uint64_t seed, int threads, int mcmc_max_steps, int chains, int walkers,
                       const std::string& sampler, const std::string& compare, bool joint, bool shared_lambda,
                       bool hierarchical, const std::string& report, bool plots) {
@@ -78,6 +79,7 @@ Calibration calibrate(const std::string& data, const std::string& surrogate_file
   o.phi_max = phi_max;
   o.min_shear_rate = min_shear_rate;
   o.keep_out_of_hematocrit_order = keep_out_of_order;
+  o.hold_coverable_points = hold_points;
   o.sampler.seed = seed;
   o.sampler.threads = threads;
   o.sampler.max_steps = mcmc_max_steps;
@@ -190,7 +192,7 @@ void bind_calibration(py::module_& m) {
         py::arg("samples") = std::vector<std::string>{}, py::arg("lam") = cal::kDefaultViscosityRatio,
         py::arg("fit_lambda") = true, py::arg("lambda_prior_sd") = cal::kLambdaPriorLogSd, py::arg("cell_radius_um") = cal::kDefaultCellRadius * 1e6,
         py::arg("plateau_min_shear_rate") = 10.0, py::arg("phi_max") = 1.0, py::arg("min_shear_rate") = 40.0,
-        py::arg("keep_out_of_order") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
+        py::arg("keep_out_of_order") = false, py::arg("hold_points") = false, py::arg("seed") = 20240601ULL, py::arg("threads") = 0,
         py::arg("mcmc_max_steps") = 20000, py::arg("chains") = 4, py::arg("walkers") = 0, py::arg("sampler") = "independence", py::arg("compare") = "",
         py::arg("joint") = false, py::arg("shared_lambda") = false, py::arg("hierarchical") = false,
         py::arg("report") = "", py::arg("plots") = false,
