@@ -13,7 +13,9 @@ dependence of the step only.
 Usage, from the repository root (minutes: one model build, one recovery, one calibration):
   python3 studies/dense-anchors/box_at_high_ca/trial_ca_box.py OUT LOW KNEE SLOPE [BEYOND SD]
   python3 studies/dense-anchors/box_at_high_ca/trial_ca_box.py OUT CA:BETA,CA:BETA,... [BEYOND SD]
-(the second form: measured steps, linear in ln Ca between them and constant beyond).
+  python3 studies/dense-anchors/box_at_high_ca/trial_ca_box.py OUT GRID.json [BEYOND SD]
+(the second form: measured steps, linear in ln Ca between them and constant beyond; the third:
+measured steps over phi_eff and Ca, as in measured_steps.json, bilinear in phi_eff and ln Ca).
 """
 import glob
 import json
@@ -27,7 +29,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from evaluate_model import RBCAL, ROOT, evaluate
 
 out = os.path.abspath(sys.argv[1])
-if ":" in sys.argv[2]:  # a table CA:BETA,CA:BETA,... (linear in ln Ca, constant beyond its ends)
+grid = None
+if sys.argv[2].endswith(".json"):  # a grid over phi_eff and Ca (measured_steps.json's form)
+    grid = json.load(open(sys.argv[2]))
+    table = None
+    rest = sys.argv[3:]
+elif ":" in sys.argv[2]:  # a table CA:BETA,CA:BETA,... (linear in ln Ca, constant beyond its ends)
     table = sorted((float(a), float(b)) for a, b in (item.split(":") for item in sys.argv[2].split(",")))
     rest = sys.argv[3:]
 else:
@@ -38,7 +45,35 @@ beyond = float(rest[0]) if len(rest) > 0 else 0.034
 sd = float(rest[1]) if len(rest) > 1 else 0.059
 
 
-def beta(ca):
+# The library's thickened volume fraction, g(c / N_a) phi at its offset c 0.75 (Steiner's
+# formula with the Evans-Fung cell's S, M, V in cell radii: studies/ib-thickening/).
+def effective_phi(phi, n_a, c=0.75, S=8.716, M=10.680, V=1.5605):
+    d = c / n_a
+    return phi * (1.0 + (S * d + M * d * d + 4.0 * math.pi / 3.0 * d ** 3) / V)
+
+
+def interpolate(xs, ys, x):  # linear, constant beyond the ends
+    if x <= xs[0]:
+        return ys[0]
+    for x0, x1, y0, y1 in zip(xs, xs[1:], ys, ys[1:]):
+        if x <= x1:
+            return y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    return ys[-1]
+
+
+def grid_beta(phi_eff, ca):
+    """Bilinear in (phi_eff, ln Ca), constant beyond the grid's Ca ends and its densest row;
+    below its first row the step falls linearly to 0 at phi_eff 0 (no cells, no layers)."""
+    rows = [interpolate([math.log(c) for c in grid["ca"]], row, math.log(ca)) for row in grid["beta"]]
+    phis = grid["phi_eff"]
+    if phi_eff < phis[0]:
+        return rows[0] * phi_eff / phis[0]
+    return interpolate(phis, rows, phi_eff)
+
+
+def beta(ca, phi_eff=None):
+    if grid is not None:
+        return grid_beta(phi_eff, ca)
     if table is None:
         return low if ca <= knee else low + slope * math.log(ca / knee)
     if ca <= table[0][0]:
@@ -62,7 +97,7 @@ for tier in ("n6", "n8"):
         r = case.get("result")
         if not r or "eta_re" not in r:
             continue
-        b = beta(case["params"]["Ca"])
+        b = beta(case["params"]["Ca"], effective_phi(case["params"]["phi"], case["numerics"]["N_a"]))
         eta = r["eta_re"]
         r["eta_re"] = eta ** (1.0 + b)
         r["eta_re_sem"] *= (1.0 + b) * r["eta_re"] / eta
