@@ -42,6 +42,11 @@ else:
     table = None
     rest = sys.argv[5:]
 beyond = float(rest[0]) if len(rest) > 0 else 0.034
+# RESOLUTION_STEP=RHO also moves each run to the N_a 12 level, ln eta_12 = (1 + RHO) ln eta_8 per
+# step from N_a 8 to 12 (compounded in 1/N_a: twice from N_a 6), and labels it N_a 12, the way
+# the N_a 8 and N_a 12 anchors of one point relate (rho -0.13 to -0.19 over nine pairs). The
+# N_a 6 runs are then left out: moved two such steps they break the model's trends.
+RESOLUTION_STEP = float(os.environ["RESOLUTION_STEP"]) if "RESOLUTION_STEP" in os.environ else None
 sd = float(rest[1]) if len(rest) > 1 else 0.059
 
 
@@ -87,7 +92,7 @@ def beta(ca, phi_eff=None):
 os.makedirs(out, exist_ok=True)
 recipe = json.load(open(os.path.join(ROOT, "data", "library", "default", "recipe.json")))
 runs = []
-for tier in ("n6", "n8"):
+for tier in ("n8",) if RESOLUTION_STEP is not None else ("n6", "n8"):
     src = os.path.join(ROOT, "data", "library", "v2", tier)
     dst = os.path.join(out, "runs", tier)
     shutil.rmtree(dst, ignore_errors=True)
@@ -98,9 +103,14 @@ for tier in ("n6", "n8"):
         if not r or "eta_re" not in r:
             continue
         b = beta(case["params"]["Ca"], effective_phi(case["params"]["phi"], case["numerics"]["N_a"]))
+        exponent = 1.0 + b
+        if RESOLUTION_STEP is not None:  # to the N_a 12 level, labelled as an N_a 12 run
+            steps = (1.0 / case["numerics"]["N_a"] - 1.0 / 12.0) / (1.0 / 8.0 - 1.0 / 12.0)
+            exponent *= (1.0 + RESOLUTION_STEP) ** steps
+            case["numerics"]["N_a"] = 12
         eta = r["eta_re"]
-        r["eta_re"] = eta ** (1.0 + b)
-        r["eta_re_sem"] *= (1.0 + b) * r["eta_re"] / eta
+        r["eta_re"] = eta ** exponent
+        r["eta_re_sem"] *= exponent * r["eta_re"] / eta
         json.dump(case, open(f, "w"), indent=1)
     runs.append(dst)
 recipe["about"] = f"trial: runs moved to the 16a gap by beta(Ca) = {sys.argv[2:]}"
