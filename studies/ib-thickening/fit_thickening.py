@@ -142,11 +142,15 @@ c_sphere = c_per_n(2.5, B_sphere, tiers_of(sphere, base), lambda d: (1 + d) ** 3
 c_spheroid = c_per_n(x_sph, B_spheroid, tiers_of(spheroid, base), steiner_factor(S, M, V))
 B_rbc = 0.5 * (B_sphere + B_spheroid)
 rbc = load("rbc_*.result.json")
-for label, pattern in (("rolling, Ca 0.01", "roll"), ("in the shear plane, Ca 1", "inplane")):
-    tiers = sorted((n, x, s_) for name, (n, b, x, s_) in rbc.items() if pattern in name and b == base)
+# lambda 1 in the shear plane: whether the excess of the swinging cell at coarse resolution
+# comes with the viscosity contrast (the inside viscosity spread over the kernel's width).
+for lam, label, pattern in ((5, "rolling, Ca 0.01", "roll"), (5, "in the shear plane, Ca 1", "inplane"),
+                            (1, "in the shear plane, Ca 1", "inplane")):
+    tiers = sorted((n, x, s_) for name, (n, b, x, s_) in rbc.items()
+                   if pattern in name and f"_lambda{lam}_" in name and b == base)
     if not tiers:
         continue
-    print(f"\n## Red cell, lambda 5, {label}: eta_sp / phi and the continuum value each N_a implies")
+    print(f"\n## Red cell, lambda {lam}, {label}: eta_sp / phi and the continuum value each N_a implies")
     print("| N_a | eta_sp / phi | X_inf with the sphere's c | X_inf with the spheroid's c | X_inf with c 0.75 |")
     print("|---|---|---|---|---|")
     for n, x, sem in tiers:
@@ -169,7 +173,7 @@ def joint_fit(points, f):
         if best is None or rms < best[2]: best = (c, x_inf, rms)
     return best
 
-roll = sorted((n, x) for name, (n, b, x, s_) in rbc.items() if "roll" in name and b == base)
+roll = sorted((n, x) for name, (n, b, x, s_) in rbc.items() if "roll" in name and "_lambda5_" in name and b == base)
 if len(roll) >= 2:
     print("\n## Red cell, lambda 5, rolling, Ca 0.01: c and X_inf fitted together (volume form, box B divided out)")
     print("| runs | c | X_inf | RMS residual | predicted eta_sp / phi at N_a 16 |")
