@@ -74,6 +74,6 @@ def print_table(title, tables):
 
 
 print_table("N_a 16 anchor", [(label, predictions(name)) for label, name in LEVELS])
-# The N_a 12 anchors beyond the first twelve (lambda 2.5 and 10, Ca 0.03 and 18), against the
+# The anchors beyond the first twelve points (lambda 2.5 and 10, Ca 0.03 and 18, lambda 1), against the
 # shipped family's predictions for the 16a gap written before they ran.
-print_table("N_a 12 anchor (extension)", [("shipped", predictions("blind_predictions_n12_extension_shipped.csv"))])
+print_table("anchor (extension)", [("shipped", predictions("blind_predictions_extension_shipped.csv"))])

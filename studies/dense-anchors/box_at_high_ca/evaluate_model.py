@@ -15,7 +15,8 @@ FIT_FLAGS = os.environ.get("FIT_FLAGS", "").split()
 
 def evaluate(family_file, out):
     for tier in ("n8", "n12"):
-        anchors = sorted(glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", f"{tier}_*.result.json")))
+        anchors = sorted(path for ca in ("0.1", "0.5", "2", "8") for path in glob.glob(
+            os.path.join(ROOT, "data", "library", "anchors", "results", f"{tier}_*_Ca{ca}_lambda5.result.json")))
         with open(os.path.join(out, f"recover_{tier}.txt"), "w") as log:
             subprocess.run([RBCAL, "recover", *anchors, "--surrogate", family_file, "--replicates", "10",
                             "-o", os.path.join(out, f"recover_{tier}.json"), *FIT_FLAGS], check=True, stdout=log,
