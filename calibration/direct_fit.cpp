@@ -223,27 +223,38 @@ std::pair<double, double> ln_shear_modulus_keeping_ca_inside(const ViscosityObse
 }
 
 // The largest sets of points that one G_s keeps inside the model's Ca range together: for
-// each covered point (phi inside the model's range) as the lowest shear rate, every covered
-// point whose rate is at most ca_max / ca_min times larger. Distinct sets, largest count only.
+// each distinct shear rate of a covered point (phi inside the model's range) as the lowest,
+// every covered point whose rate is at most ca_max / ca_min times larger. Two pointers over the
+// points sorted by rate (O(n log n)); sets only for the windows of the largest count, at most
+// kMaxCoverableSets of them, spread evenly (a held fit scans each).
+constexpr std::size_t kMaxCoverableSets = 64;
 std::vector<std::vector<bool>> largest_coverable_sets(const std::vector<RelativeViscosityPoint>& points,
                                                       const surrogate::ParameterRange& range) {
+  std::vector<std::size_t> covered;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (range.contains_phi(points[i].phi)) covered.push_back(i);
+  std::sort(covered.begin(), covered.end(),
+            [&](std::size_t a, std::size_t b) { return points[a].shear_rate < points[b].shear_rate; });
   const double span = range.ca_max / range.ca_min;
-  std::vector<std::vector<bool>> best;
-  int most = 0;
-  for (const auto& low : points) {
-    if (!range.contains_phi(low.phi)) continue;
-    std::vector<bool> set(points.size());
-    int count = 0;
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      const auto& p = points[j];
-      set[j] = range.contains_phi(p.phi) && p.shear_rate >= low.shear_rate && p.shear_rate <= low.shear_rate * span;
-      count += set[j] ? 1 : 0;
-    }
-    if (count > most) best.clear();
-    if (count >= most && std::find(best.begin(), best.end(), set) == best.end()) best.push_back(set);
-    most = std::max(most, count);
+  std::vector<std::pair<std::size_t, std::size_t>> windows;  // [first, last) in covered
+  std::size_t most = 0, end = 0;
+  for (std::size_t first = 0; first < covered.size(); ++first) {
+    const double low = points[covered[first]].shear_rate;
+    if (first > 0 && points[covered[first - 1]].shear_rate == low) continue;  // the same window's start
+    end = std::max(end, first);
+    while (end < covered.size() && points[covered[end]].shear_rate <= low * span) ++end;
+    if (end - first > most) windows.clear();
+    if (end - first >= most) windows.push_back({first, end});
+    most = std::max(most, end - first);
   }
-  return best;
+  const std::size_t stride = (windows.size() + kMaxCoverableSets - 1) / std::max<std::size_t>(1, kMaxCoverableSets);
+  std::vector<std::vector<bool>> sets;
+  for (std::size_t w = 0; w < windows.size(); w += std::max<std::size_t>(1, stride)) {
+    std::vector<bool> set(points.size());
+    for (std::size_t k = windows[w].first; k < windows[w].second; ++k) set[covered[k]] = true;
+    sets.push_back(std::move(set));
+  }
+  return sets;
 }
 
 ceres::LossFunction* make_loss(const DirectFitOptions& options) {
