@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "calibration/joint_likelihood.hpp"
@@ -178,6 +179,20 @@ std::vector<bool> select_inside(const ViscosityObservation& obs, const std::vect
   return inside;
 }
 
+// The mean squared weighted residual of the points in `set` at x, and how many they are (the
+// mean is infinite for none).
+std::pair<double, int> mean_squared_residual(const std::vector<WeightedResidual>& residuals,
+                                             const std::vector<bool>& set, const FitParameters& x) {
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < set.size(); ++i)
+    if (set[i]) {
+      sum += std::pow(residuals[i](x), 2);
+      ++count;
+    }
+  return {count > 0 ? sum / count : std::numeric_limits<double>::infinity(), count};
+}
+
 // The grid node of ln G_s with the smallest mean squared weighted residual among those where at
 // least half as many points as at the best-covered node are inside the model's range.
 double scan_start(const std::vector<WeightedResidual>& residuals, const ViscosityObservation& obs,
@@ -189,14 +204,7 @@ double scan_start(const std::vector<WeightedResidual>& residuals, const Viscosit
   std::vector<double> scores(n);
   for (int k = 0; k < n; ++k) {
     x.ln_shear_modulus = lo + (hi - lo) * k / (n - 1);
-    const auto inside = select_inside(obs, points, x);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (inside[i]) {
-        sum += std::pow(residuals[i](x), 2);
-        ++counts[k];
-      }
-    scores[k] = counts[k] > 0 ? sum / counts[k] : std::numeric_limits<double>::infinity();
+    std::tie(scores[k], counts[k]) = mean_squared_residual(residuals, select_inside(obs, points, x), x);
   }
   const int most = *std::max_element(counts.begin(), counts.end());
   int best = -1;
@@ -247,9 +255,9 @@ std::vector<std::vector<bool>> largest_coverable_sets(const std::vector<Relative
     if (end - first >= most) windows.push_back({first, end});
     most = std::max(most, end - first);
   }
-  const std::size_t stride = (windows.size() + kMaxCoverableSets - 1) / std::max<std::size_t>(1, kMaxCoverableSets);
+  const std::size_t stride = std::max<std::size_t>(1, (windows.size() + kMaxCoverableSets - 1) / kMaxCoverableSets);
   std::vector<std::vector<bool>> sets;
-  for (std::size_t w = 0; w < windows.size(); w += std::max<std::size_t>(1, stride)) {
+  for (std::size_t w = 0; w < windows.size(); w += stride) {
     std::vector<bool> set(points.size());
     for (std::size_t k = windows[w].first; k < windows[w].second; ++k) set[covered[k]] = true;
     sets.push_back(std::move(set));
@@ -397,15 +405,9 @@ class DirectFit {
       FitParameters x = x_;
       for (int k = 0; k < n; ++k) {
         x.ln_shear_modulus = lo + (hi - lo) * k / (n - 1);
-        double sum = 0.0;
-        int count = 0;
-        for (std::size_t i = 0; i < set.size(); ++i)
-          if (set[i]) {
-            sum += std::pow(residuals_[i](x), 2);
-            ++count;
-          }
-        if (count > 0 && sum / count < best) {
-          best = sum / count;
+        const double score = mean_squared_residual(residuals_, set, x).first;
+        if (score < best) {
+          best = score;
           used_ = set;
           x_.ln_shear_modulus = x.ln_shear_modulus;
         }
