@@ -48,6 +48,11 @@ beyond = float(rest[0]) if len(rest) > 0 else 0.034
 # N_a 6 runs are then left out: moved two such steps they break the model's trends.
 RESOLUTION_STEP = float(os.environ["RESOLUTION_STEP"]) if "RESOLUTION_STEP" in os.environ else None
 sd = float(rest[1]) if len(rest) > 1 else 0.059
+# LEVEL=FILE.json (studies/dense-anchors/level_from_anchors/fit_level.py) also moves each run onto
+# the finer anchors' level: ln eta = (1 + eps(phi_eff, Ca)) ln eta_16a, eps from the file's grid
+# (bilinear, as the box step's) or, with LEVEL_FORM=plane, its fitted plane.
+LEVEL = json.load(open(os.environ["LEVEL"])) if "LEVEL" in os.environ else None
+LEVEL_FORM = os.environ.get("LEVEL_FORM", "grid")
 
 
 # The library's thickened volume fraction, g(c / N_a) phi at its offset c 0.75 (Steiner's
@@ -66,19 +71,30 @@ def interpolate(xs, ys, x):  # linear, constant beyond the ends
     return ys[-1]
 
 
-def grid_beta(phi_eff, ca):
+def grid_value(table, key, phi_eff, ca):
     """Bilinear in (phi_eff, ln Ca), constant beyond the grid's Ca ends and its densest row;
-    below its first row the step falls linearly to 0 at phi_eff 0 (no cells, no layers)."""
-    rows = [interpolate([math.log(c) for c in grid["ca"]], row, math.log(ca)) for row in grid["beta"]]
-    phis = grid["phi_eff"]
+    below its first row the value falls linearly to 0 at phi_eff 0 (no cells, no correction)."""
+    rows = [interpolate([math.log(c) for c in table["ca"]], row, math.log(ca)) for row in table[key]]
+    phis = table["phi_eff"]
     if phi_eff < phis[0]:
         return rows[0] * phi_eff / phis[0]
     return interpolate(phis, rows, phi_eff)
 
 
+def level_eps(phi_eff, ca):
+    if LEVEL_FORM == "grid":
+        return grid_value(LEVEL["grid"], "eps", phi_eff, ca)
+    lo, hi = LEVEL["phi_range"]
+    x = math.log(min(max(ca, LEVEL["ca_range"][0]), LEVEL["ca_range"][1]))
+    y = min(max(phi_eff, lo), hi) - LEVEL["phi0"]
+    e = LEVEL["e"]
+    value = e[0] + e[1] * x + e[2] * y + e[3] * x * y
+    return value * min(1.0, phi_eff / lo)
+
+
 def beta(ca, phi_eff=None):
     if grid is not None:
-        return grid_beta(phi_eff, ca)
+        return grid_value(grid, "beta", phi_eff, ca)
     if table is None:
         return low if ca <= knee else low + slope * math.log(ca / knee)
     if ca <= table[0][0]:
@@ -102,8 +118,10 @@ for tier in ("n8",) if RESOLUTION_STEP is not None else ("n6", "n8"):
         r = case.get("result")
         if not r or "eta_re" not in r:
             continue
-        b = beta(case["params"]["Ca"], effective_phi(case["params"]["phi"], case["numerics"]["N_a"]))
-        exponent = 1.0 + b
+        phi_eff = effective_phi(case["params"]["phi"], case["numerics"]["N_a"])
+        exponent = 1.0 + beta(case["params"]["Ca"], phi_eff)
+        if LEVEL is not None:
+            exponent *= 1.0 + level_eps(phi_eff, case["params"]["Ca"])
         if RESOLUTION_STEP is not None:  # to the N_a 12 level, labelled as an N_a 12 run
             steps = (1.0 / case["numerics"]["N_a"] - 1.0 / 12.0) / (1.0 / 8.0 - 1.0 / 12.0)
             exponent *= (1.0 + RESOLUTION_STEP) ** steps
