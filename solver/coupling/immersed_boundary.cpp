@@ -113,25 +113,41 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   }
 }
 
+SlabSchedule slab_schedule(int nx) {
+  const int width = NodeOrder::slab_width;
+  const int slabs = (nx + width - 1) / width;
+  // The slab s may write columns from width s up to the last start in it plus the widest
+  // support less one; beyond nx - 1 that wraps onto slab 0 (and never further, since the
+  // width is at least the support less one).
+  const int reach = kernel_support(KernelKind::Peskin4) - 1;
+  auto wraps_onto_slab0 = [&](int s) { return std::min(width * s + width - 1, nx - 1) + reach >= nx; };
+  SlabSchedule plan;
+  for (int s = 0; s < slabs; ++s) {
+    // Slab 0 meets a wrapping slab of the same parity in one phase; the wrap of a slab of
+    // the other parity is harmless. A lone slab (nx <= width) has no other to meet.
+    const bool meets_slab0 = s > 0 && s % 2 == 0 && wraps_onto_slab0(s);
+    (meets_slab0 ? plan.tail : plan.phase[s % 2]).push_back(s);
+  }
+  return plan;
+}
+
 void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
   const int ny = fluid.ny(), nz = fluid.nz();
   double* const f[3] = {fluid.force(0), fluid.force(1), fluid.force(2)};
-  // A node's stencil reaches at most support - 1 columns past its slab, so slabs of one
-  // parity can spread concurrently: even slabs, then odd ones, then (for an odd slab
-  // count) the last slab, which touches slab 0 across the periodic boundary. Within a
-  // slab the nodes keep their order, so the sums do not depend on the thread count.
-  const int slabs = static_cast<int>(order.slab_start.size()) - 1;
+  // A node's stencil reaches at most support - 1 columns past its slab, so the slabs of one
+  // phase can spread concurrently (slab_schedule). Within a slab the nodes keep their order,
+  // so the sums do not depend on the thread count.
   auto spread_slab = [&](int slab) {
     for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g)
       spread_one(order.stencil[g], order.force[g], f, ny, nz);
   };
-  const bool odd_count = slabs % 2 == 1;
-  const int paired = odd_count ? slabs - 1 : slabs;
-  for (int parity = 0; parity < 2; ++parity) {
+  const SlabSchedule plan = slab_schedule(fluid.nx());
+  for (const std::vector<int>& phase : plan.phase) {
+    const long count = static_cast<long>(phase.size());
 #pragma omp parallel for schedule(dynamic)
-    for (int slab = parity; slab < paired; slab += 2) spread_slab(slab);
+    for (long i = 0; i < count; ++i) spread_slab(phase[i]);
   }
-  if (odd_count) spread_slab(slabs - 1);
+  for (const int slab : plan.tail) spread_slab(slab);
 }
 
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,

@@ -39,6 +39,17 @@ struct NodeOrder {
   std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
   std::vector<std::size_t> cell_first;                         // scratch: first global node of each cell
 };
+// How spread_forces visits the x-slabs of a lattice nx wide: two parallel phases, in each of
+// which no two slabs write a common lattice column (periodic wrap included, for the widest
+// support), then the slabs left to a serial tail. A slab whose stencils wrap around x onto
+// slab 0 of its own parity joins the tail: the last slab when the count is odd, the one
+// before it when the count is even and the last slab is one or two columns wide.
+struct SlabSchedule {
+  std::vector<int> phase[2];
+  std::vector<int> tail;
+};
+SlabSchedule slab_schedule(int nx);
+
 // Fills order, stencils included, for these nodes (forces: the same shape as positions).
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);

@@ -125,11 +125,40 @@ TEST(Stencil, WeightsEqualTheKernelAtEachNode) {
   }
 }
 
+// The slabs of one parallel phase never write a common lattice column, for every lattice
+// width: each slab's columns are those its nodes' stencils (starting anywhere in the slab,
+// the widest support) can reach, wrapped periodically. The even slab counts whose last slab
+// is one or two columns wide (nx = 14, 54, 78, ...) once let the slab before the last wrap
+// onto slab 0 in the same phase.
+TEST(Spreading, SlabsOfOnePhaseNeverShareAColumn) {
+  const int width = NodeOrder::slab_width, support = kernel_support(KernelKind::Peskin4);
+  for (int nx = 1; nx <= 200; ++nx) {
+    const SlabSchedule plan = slab_schedule(nx);
+    const int slabs = (nx + width - 1) / width;
+    std::vector<int> seen(slabs, 0);
+    for (const auto* list : {&plan.phase[0], &plan.phase[1], &plan.tail})
+      for (int s : *list) ++seen[s];
+    for (int s = 0; s < slabs; ++s) EXPECT_EQ(seen[s], 1) << "nx " << nx << " slab " << s;
+    for (const std::vector<int>& phase : plan.phase) {
+      std::vector<int> writer(nx, -1);
+      for (int s : phase)
+        for (int start = width * s; start < std::min(width * (s + 1), nx); ++start)
+          for (int k = 0; k < support; ++k) {
+            int& w = writer[(start + k) % nx];
+            EXPECT_TRUE(w == -1 || w == s) << "nx " << nx << ": slabs " << w << " and " << s << " write column "
+                                           << (start + k) % nx << " in one phase";
+            w = s;
+          }
+    }
+  }
+}
+
 // Spreading many cells at once runs slabs of x in parallel; the field must equal a plain
 // node-by-node sum, also for slab counts that are odd (nx = 9, 10: three slabs, the last
-// one narrow) or a single slab (nx = 4), with nodes across the periodic boundary.
+// one narrow), even with a narrow last slab (nx = 14) or a single slab (nx = 4), with nodes
+// across the periodic boundary.
 TEST(Spreading, ParallelSlabsEqualASerialSum) {
-  for (int nx : {4, 9, 10, 16}) {
+  for (int nx : {4, 9, 10, 14, 16}) {
     FluidConfig cfg;
     cfg.nx = nx;
     cfg.ny = 12;
