@@ -14,16 +14,17 @@ BoxAnchorPrior box_anchor_prior(const std::vector<std::filesystem::path>& anchor
                                 const EffectivePhi& phi_eff, const std::vector<int>& library_resolutions,
                                 const BoxTwinPrior& twins) {
   if (anchors.empty()) throw std::invalid_argument("box correction: no anchor runs given");
+  if (library_resolutions.empty()) throw std::invalid_argument("box correction: no library resolutions given");
+  const int coarsest = *std::min_element(library_resolutions.begin(), library_resolutions.end());
   BoxAnchorPrior p;
   const ParameterRange range = model.range();
   for (const std::filesystem::path& file : anchors) {
     BoxAnchor a{read_library_case(file)};
     const LibraryCase& r = a.run;
-    if (std::find(library_resolutions.begin(), library_resolutions.end(), r.nodes_per_radius) ==
-        library_resolutions.end())
+    if (r.nodes_per_radius < coarsest)
       throw std::invalid_argument(file.string() + ": N_a " + std::to_string(r.nodes_per_radius) +
-                                  " is not a resolution of the library's runs (an anchor reads the model at its "
-                                  "own resolution)");
+                                  " is coarser than the library's runs (N_a " + std::to_string(coarsest) +
+                                  " and finer): an anchor reads the model at its own resolution or a finer one");
     a.phi_eff = phi_eff(r);
     if (!range.contains(a.phi_eff, r.capillary_number, r.viscosity_ratio))
       throw std::invalid_argument(file.string() + printf_string(": phi_eff %.4g, Ca %g, lambda %g lies outside the "

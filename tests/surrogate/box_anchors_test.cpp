@@ -85,8 +85,8 @@ TEST(BoxAnchors, PriorFromAnchorsAsTheFormulaSays) {
   fs::remove_all(f.dir);
 }
 
-// An anchor at a resolution the library lacks, or outside the model's range, is refused with
-// its file named; so is an empty list.
+// An anchor coarser than the library's runs, or outside the model's range, is refused with its
+// file named; so is an empty list. One finer than the library's is taken.
 TEST(BoxAnchors, RefusesAnchorsTheModelCannotRead) {
   AnchorFiles f = anchor_files("errors");
   const ExponentialLaw law;
@@ -100,9 +100,11 @@ TEST(BoxAnchors, RefusesAnchorsTheModelCannotRead) {
     }
     return "accepted";
   };
-  const std::string resolution = message({a}, {6});
+  const std::string resolution = message({a}, {10, 12});
   EXPECT_NE(resolution.find("at_n8.json"), std::string::npos) << resolution;
-  EXPECT_NE(resolution.find("N_a 8"), std::string::npos) << resolution;
+  EXPECT_NE(resolution.find("N_a 8 is coarser"), std::string::npos) << resolution;
+  // A finer run than the library's is read at its own resolution.
+  EXPECT_EQ(message({a}, {6}), "accepted");
   const std::string range = message({a, dense}, {8});
   EXPECT_NE(range.find("too_dense.json"), std::string::npos) << range;
   EXPECT_NE(range.find("outside the model's range"), std::string::npos) << range;
