@@ -10,7 +10,7 @@
 // the run stands, under the same mapping, for the continuum at its own phi_eff, so its beta
 // also carries the mapping's error at that resolution: the step the calibration needs, from
 // the model to the finer level (the anchors' N_a 8, 12 and 16 tiers give the same mean step
-// at the shipped offset: docs/library.md, "The dense anchors"). Runs coarser than the library's
+// at the shipped offset: docs/library.md, "The box twins"). Runs coarser than the library's
 // are refused. For the calibration the sum is what counts. The prior for the bulk adds what
 // lies between the doubled box and the bulk by the twins' rule (bulk_prior in box_twins.hpp,
 // with the twins' mean m):
