@@ -72,7 +72,10 @@ def first_order_extrapolation(by):
 # the way: the twins measured the step from the 8a gap to the 16a one directly, TWIN_STEP (the
 # same runs in both gaps; data/library/default/build_report.txt, "box correction from twin
 # runs"), so ln eta_16a = (1 + TWIN_STEP) / (1 + beta) ln eta_bulk.
-TWIN_STEP = 0.068
+# STEP_TO_16A=N overrides it: a family whose box prior comes from the anchors themselves is
+# moved back to the 16a gap by the anchors' own mean step n (0.012 for the prior of 0.014 +-
+# 0.052 from every N_a 8 and 12 anchor; data/library/default/build_report.txt).
+TWIN_STEP = float(os.environ.get("STEP_TO_16A", "0.068"))
 
 
 def in_gap(eta_bulk, sd_bulk=0.0, beta=BETA_MEAN):
