@@ -50,6 +50,8 @@ def anchor_runs():
     runs = {}
     for path in glob.glob(os.path.join(ROOT, "data", "library", "anchors", "results", "n*_*.result.json")):
         name = os.path.basename(path)[: -len(".result.json")]
+        if "_seed" in name:  # a further seed of a point (its first seed stands for the point here)
+            continue
         n_a, point = re.match(r"n(\d+)_(.*)", name).groups()
         r = json.load(open(path))["result"]
         runs.setdefault(point, {})[int(n_a)] = (r["eta_re"], r["eta_re_sem"], r["phi_actual"])
