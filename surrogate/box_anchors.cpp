@@ -41,6 +41,16 @@ BoxAnchorPrior box_anchor_prior(const std::vector<std::filesystem::path>& anchor
   std::vector<double> beta, se;
   for (const BoxAnchor& a : p.anchors) beta.push_back(a.beta), se.push_back(a.beta_se);
   const BetaSpread spread = spread_of(beta, se);
+  std::vector<int> resolutions;
+  for (const BoxAnchor& a : p.anchors) resolutions.push_back(a.run.nodes_per_radius);
+  std::sort(resolutions.begin(), resolutions.end());
+  resolutions.erase(std::unique(resolutions.begin(), resolutions.end()), resolutions.end());
+  for (const int n_a : resolutions) {
+    std::vector<double> tier_beta, tier_se;
+    for (const BoxAnchor& a : p.anchors)
+      if (a.run.nodes_per_radius == n_a) tier_beta.push_back(a.beta), tier_se.push_back(a.beta_se);
+    p.by_resolution.push_back({n_a, tier_beta.size(), spread_of(tier_beta, tier_se)});
+  }
   p.mean_beta = spread.mean, p.scatter = spread.scatter, p.mean_se = spread.mean_se;
   p.twins_mean_beta = twins.mean_beta;
   const BulkPrior bulk = bulk_prior(spread, twins.mean_beta);
@@ -57,6 +67,10 @@ std::string describe_box_anchors(const BoxAnchorPrior& p) {
                        a.model_eta_re, a.beta, a.beta_se);
   s += printf_string("  %zu anchors: mean beta %+.3f, scatter %.3f, standard error of the mean %.3f\n",
                      p.anchors.size(), p.mean_beta, p.scatter, p.mean_se);
+  if (p.by_resolution.size() > 1)
+    for (const ResolutionStep& r : p.by_resolution)
+      s += printf_string("    at N_a %d: %zu anchors, mean beta %+.3f, scatter %.3f\n", r.nodes_per_radius, r.count,
+                         r.spread.mean, r.spread.scatter);
   s += printf_string("  prior for the bulk: mean %.4f, sd %.4f (n + 0.5 m +- sqrt(s^2 + (0.5 m)^2 + se_n^2), "
                      "m %+.3f from the twins)\n",
                      p.mean, p.sd, p.twins_mean_beta);

@@ -34,8 +34,16 @@ struct BoxAnchor {
   double beta = 0.0, beta_se = 0.0;
 };
 
+// The anchors of one resolution: whether the tiers ask the same step.
+struct ResolutionStep {
+  int nodes_per_radius = 0;
+  std::size_t count = 0;
+  BetaSpread spread;
+};
+
 struct BoxAnchorPrior {
   std::vector<BoxAnchor> anchors;
+  std::vector<ResolutionStep> by_resolution;  // ascending N_a
   double mean_beta = 0.0, scatter = 0.0, mean_se = 0.0;  // n, s, se_n
   double twins_mean_beta = 0.0;                         // m
   double mean = 0.0, sd = 0.0;                          // the prior for the bulk
@@ -51,7 +59,8 @@ BoxAnchorPrior box_anchor_prior(const std::vector<std::filesystem::path>& anchor
                                 const EffectivePhi& phi_eff, const std::vector<int>& library_resolutions,
                                 const BoxTwinPrior& twins);
 
-// One line per anchor (N_a, phi_actual, phi_eff, run, model, beta), then n, s, se_n and the prior.
+// One line per anchor (N_a, phi_actual, phi_eff, run, model, beta), then n, s, se_n, the same
+// per resolution when there are several, and the prior.
 std::string describe_box_anchors(const BoxAnchorPrior& prior);
 
 }  // namespace rbcal::surrogate

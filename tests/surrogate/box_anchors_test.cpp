@@ -85,6 +85,30 @@ TEST(BoxAnchors, PriorFromAnchorsAsTheFormulaSays) {
   fs::remove_all(f.dir);
 }
 
+// Anchors of two resolutions: the step of each tier beside the pooled one (two N_a 8 anchors at
+// beta -0.1 and +0.1, one N_a 12 anchor at +0.3: tiers 0 and +0.3, pooled +0.1).
+TEST(BoxAnchors, StepPerResolution) {
+  AnchorFiles f = anchor_files("tiers");
+  const ExponentialLaw law;
+  const double m1 = std::exp(2.0 * 1.5 * 0.2), m2 = std::exp(2.0 * 1.5 * 0.3);
+  const fs::path a = f.write("a.json", 0.2, std::pow(m1, 0.9), 0.0);
+  const fs::path b = f.write("b.json", 0.3, std::pow(m2, 1.1), 0.0);
+  f.run["numerics"]["N_a"] = 12;
+  const fs::path c = f.write("c.json", 0.3, std::pow(m2, 1.3), 0.0);
+  const BoxAnchorPrior p = box_anchor_prior({a, b, c}, law, kPhiEff, {6, 8}, twins_with_mean(0.0));
+  ASSERT_EQ(p.by_resolution.size(), 2u);
+  EXPECT_EQ(p.by_resolution[0].nodes_per_radius, 8);
+  EXPECT_EQ(p.by_resolution[0].count, 2u);
+  EXPECT_NEAR(p.by_resolution[0].spread.mean, 0.0, 1e-13);
+  EXPECT_NEAR(p.by_resolution[0].spread.scatter, std::sqrt(0.02), 1e-13);
+  EXPECT_EQ(p.by_resolution[1].nodes_per_radius, 12);
+  EXPECT_NEAR(p.by_resolution[1].spread.mean, 0.3, 1e-13);
+  EXPECT_NEAR(p.mean_beta, 0.1, 1e-13);
+  EXPECT_NE(describe_box_anchors(p).find("at N_a 12: 1 anchors, mean beta +0.300"), std::string::npos)
+      << describe_box_anchors(p);
+  fs::remove_all(f.dir);
+}
+
 // An anchor coarser than the library's runs, or outside the model's range, is refused with its
 // file named; so is an empty list. One finer than the library's is taken.
 TEST(BoxAnchors, RefusesAnchorsTheModelCannotRead) {
