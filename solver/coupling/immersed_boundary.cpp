@@ -83,7 +83,7 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   start.assign(keys + 1, 0);
   for (const std::uint32_t k : key) ++start[k + 1];
   for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
-  const int slabs = (nx + NodeOrder::slab_width - 1) / NodeOrder::slab_width;
+  const int slabs = NodeOrder::slab_count(nx);
   order.slab_start.resize(slabs + 1);
   for (int s = 0; s <= slabs; ++s)
     order.slab_start[s] = start[std::min(keys, static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz)];
@@ -115,7 +115,7 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
 
 SlabSchedule slab_schedule(int nx) {
   const int width = NodeOrder::slab_width;
-  const int slabs = (nx + width - 1) / width;
+  const int slabs = NodeOrder::slab_count(nx);
   // The slab s may write columns from width s up to the last start in it plus the widest
   // support less one; beyond nx - 1 that wraps onto slab 0 (and never further, since the
   // width is at least the support less one).

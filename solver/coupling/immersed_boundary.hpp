@@ -30,6 +30,8 @@ struct NodeOrder {
   // Slab width in x: at least the widest support less one, so that slabs two apart never
   // write the same lattice node.
   static constexpr int slab_width = 4;
+  // The slabs of a lattice nx wide (the last one may be narrower).
+  static constexpr int slab_count(int nx) { return (nx + slab_width - 1) / slab_width; }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
   std::vector<Vec3> position, force;                           // of nodes[g]
   // Kernel stencils at position[g]: built once per membrane update, read by the spreading
