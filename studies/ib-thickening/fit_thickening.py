@@ -147,7 +147,7 @@ rbc = load("rbc_*.result.json")
 for lam, label, pattern in ((5, "rolling, Ca 0.01", "roll"), (5, "in the shear plane, Ca 1", "inplane"),
                             (1, "in the shear plane, Ca 1", "inplane")):
     tiers = sorted((n, x, s_) for name, (n, b, x, s_) in rbc.items()
-                   if pattern in name and f"_lambda{lam}_" in name and b == base)
+                   if pattern in name and f"_lambda{lam}_" in name and b == base and "_tau" not in name)
     if not tiers:
         continue
     print(f"\n## Red cell, lambda {lam}, {label}: eta_sp / phi and the continuum value each N_a implies")
