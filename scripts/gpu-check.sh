@@ -11,6 +11,9 @@
 # ANCHOR: a case of data/library/anchors/cases/ by name, or any case file by its path. Runs
 # resume from their checkpoints: a run cut off by SECONDS goes on in the next call while the
 # machine is still warm (its files stay in the script's work folder there).
+# PARALLEL=N runs N anchors at a time on the one GPU (default 1): a small case leaves the GPU
+# idle between its kernels, which another case's kernels then fill. BACKEND=cpu runs them on
+# the host's cores instead (to try the script without a GPU).
 # Writes OUT/log.txt (everything printed) and OUT/runs.tar.gz (each run's result.json,
 # series.csv and log); OUT defaults to ./gpu-check.out.
 set -u
@@ -42,11 +45,14 @@ bounded() {  # LIMIT COMMAND...: the command under min(LIMIT, what is left less 
   timeout -s TERM "$limit" "$@"
 }
 
+backend=${BACKEND:-device}
+parallel=${PARALLEL:-1}
+
 simulate() {  # NAME CASE LIMIT
   local name=$1 case=$2 limit=$3
   [ "$(left)" -gt 20 ] || { echo "$name: skipped (no time left)"; return; }
   local t0=$(date +%s)
-  bounded "$limit" "$run" rbcal simulate "$case" --backend device -q --resume -o "$work/runs/$name.out" \
+  bounded "$limit" "$run" rbcal simulate "$case" --backend "$backend" -q --resume -o "$work/runs/$name.out" \
     >> "$work/runs/$name.log" 2>&1
   echo "$name: exit $? after $(( $(date +%s) - t0 )) s"
   grep -E "eta_re|Taylor" "$work/runs/$name.log" | sed 's/^/    /'
@@ -74,13 +80,20 @@ simulate() {  # NAME CASE LIMIT
   echo "== dense library cases (CPU: 4.0518 +- 0.0082 and 2.6907 +- 0.0142)"
   for n in phi0.44_Ca2.9_lambda2.58_n8 phi0.26_Ca0.8_lambda5_n8; do simulate "$n" "studies/gpu-path/cases/$n.json" 150; done
   fi
-  echo "== anchors"
+  echo "== anchors ($parallel at a time)"
+  # Each anchor's summary goes to its own file, printed in the given order once all are done.
+  names=()
   for a in "${anchors[@]}"; do
     case "$a" in
-      *.json) simulate "$(basename "$a" .json)" "$a" 600 ;;
-      *) simulate "$a" "data/library/anchors/cases/$a.json" 600 ;;
+      *.json) name=$(basename "$a" .json); file=$a ;;
+      *) name=$a; file=data/library/anchors/cases/$a.json ;;
     esac
+    names+=("$name")
+    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
+    simulate "$name" "$file" 600 > "$work/runs/$name.summary" 2>&1 &
   done
+  wait
+  for name in "${names[@]}"; do cat "$work/runs/$name.summary"; done
   echo "== done after $(( $(date +%s) - start )) s"
 } 2>&1 | tee "$out/log.txt"
 (cd "$work/runs" && tar czf "$out/runs.tar.gz" $(ls -d *.log */result.json */series.csv 2>/dev/null))
