@@ -14,7 +14,7 @@ mapping's form:
   shell     1 + s delta: an additive shell in eta_sp, linear in dx (s from the data)
 For each form: the c that each N_a alone needs, and one c for all with its RMS residual.
 """
-import functools, glob, json, math, os
+import functools, glob, json, math, os, re
 
 import numpy
 
@@ -147,7 +147,8 @@ rbc = load("rbc_*.result.json")
 for lam, label, pattern in ((5, "rolling, Ca 0.01", "roll"), (5, "in the shear plane, Ca 1", "inplane"),
                             (1, "in the shear plane, Ca 1", "inplane")):
     tiers = sorted((n, x, s_) for name, (n, b, x, s_) in rbc.items()
-                   if pattern in name and f"_lambda{lam}_" in name and b == base and "_tau" not in name)
+                   if pattern in name and f"_lambda{lam}_" in name and b == base
+                   and re.fullmatch(r"rbc_lambda[\d.]+_Ca[\d.]+_[a-z]+_n\d+\.result\.json", name))
     if not tiers:
         continue
     print(f"\n## Red cell, lambda {lam}, {label}: eta_sp / phi and the continuum value each N_a implies")
