@@ -53,6 +53,11 @@ for name, d in pairs:
     print(f"  {name}: ln(seed 2 / seed 1) {d:+.4f}")
 noise = rms([d for _, d in pairs]) / math.sqrt(2.0)
 print(f"  one run's noise (RMS of the differences / sqrt 2): {noise:.4f} over {len(pairs)} pairs")
+sems = [r["eta_re_sem"] / r["eta_re"] for r in
+        (json.load(open(f))["result"] for f in glob.glob(f"{ANCHORS}/n*_lambda5.result.json"))]
+noise_halves = 2.0 * rms(sems)
+print(f"  or from the runs' sems, doubled as the window-halves test asks (window_halves.py): {noise_halves:.4f}"
+      f" (RMS relative sem {rms(sems):.4f} over {len(sems)} anchors)")
 
 # 2.-3. The anchors against the model, per tier (lambda 5 only).
 rows = {}
@@ -63,9 +68,10 @@ for line in open(sys.argv[1]):
 print("\n## 2.-3. The anchors (lambda 5) against the model in the 16a gap, ln(run / model)")
 for n_a, by in sorted(rows.items()):
     v = list(by.values())
-    spread = math.sqrt(max(0.0, rms([x - mean(v) for x in v]) ** 2 - noise ** 2))
-    print(f"  N_a {n_a}: {len(v)} anchors, mean {mean(v):+.4f} +- {rms([x - mean(v) for x in v]) / math.sqrt(len(v)):.4f}"
-          f" (standard error), scatter {rms([x - mean(v) for x in v]):.4f}, of which not the runs' noise {spread:.4f}")
+    scatter = rms([x - mean(v) for x in v])
+    apart = [math.sqrt(max(0.0, scatter ** 2 - n ** 2)) for n in (noise, noise_halves)]
+    print(f"  N_a {n_a}: {len(v)} anchors, mean {mean(v):+.4f} +- {scatter / math.sqrt(len(v)):.4f} (standard error),"
+          f" scatter {scatter:.4f}, of which not the runs' noise {apart[0]:.4f} (seeds) or {apart[1]:.4f} (halves)")
 
 # 4. N_a 12 -> 16 at the same point, against the model.
 print("\n## 4. From N_a 12 to 16 at the same point, against the model")
