@@ -13,7 +13,9 @@
 # machine is still warm (its files stay in the script's work folder there).
 # PARALLEL=N runs N anchors at a time on the one GPU (default 1): a small case leaves the GPU
 # idle between its kernels, which another case's kernels then fill. BACKEND=cpu runs them on
-# the host's cores instead (to try the script without a GPU).
+# the host's cores instead (to try the script without a GPU). CPU_CASES="CASE.json ..." runs
+# those case files on the host's cores meanwhile, one after another, CPU_THREADS (default 12)
+# threads each.
 # Writes OUT/log.txt (everything printed) and OUT/runs.tar.gz (each run's result.json,
 # series.csv and log); OUT defaults to ./gpu-check.out.
 set -u
@@ -80,8 +82,18 @@ simulate() {  # NAME CASE LIMIT
   echo "== dense library cases (CPU: 4.0518 +- 0.0082 and 2.6907 +- 0.0142)"
   for n in phi0.44_Ca2.9_lambda2.58_n8 phi0.26_Ca0.8_lambda5_n8; do simulate "$n" "studies/gpu-path/cases/$n.json" 150; done
   fi
+  # Each run's summary goes to its own file, printed in the given order once all are done.
+  cpu_names=() cpu_pid=
+  if [ -n "${CPU_CASES:-}" ]; then
+    for c in $CPU_CASES; do cpu_names+=("$(basename "$c" .json)"); done
+    (
+      backend=cpu
+      export OMP_NUM_THREADS=${CPU_THREADS:-12}
+      for c in $CPU_CASES; do simulate "$(basename "$c" .json)" "$c" 600 > "$work/runs/$(basename "$c" .json).summary" 2>&1; done
+    ) &
+    cpu_pid=$!
+  fi
   echo "== anchors ($parallel at a time)"
-  # Each anchor's summary goes to its own file, printed in the given order once all are done.
   names=()
   for a in "${anchors[@]}"; do
     case "$a" in
@@ -89,11 +101,15 @@ simulate() {  # NAME CASE LIMIT
       *) name=$a; file=data/library/anchors/cases/$a.json ;;
     esac
     names+=("$name")
-    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n; done
+    while [ "$(jobs -rp | grep -vx "${cpu_pid:-none}" | wc -l)" -ge "$parallel" ]; do wait -n; done
     simulate "$name" "$file" 600 > "$work/runs/$name.summary" 2>&1 &
   done
   wait
   for name in "${names[@]}"; do cat "$work/runs/$name.summary"; done
+  if [ -n "$cpu_pid" ]; then
+    echo "== on the host's cores"
+    for name in "${cpu_names[@]}"; do cat "$work/runs/$name.summary" 2>/dev/null; done
+  fi
   echo "== done after $(( $(date +%s) - start )) s"
 } 2>&1 | tee "$out/log.txt"
 (cd "$work/runs" && tar czf "$out/runs.tar.gz" $(ls -d *.log */result.json */series.csv 2>/dev/null))
