@@ -49,6 +49,12 @@ bounded() {  # LIMIT COMMAND...: the command under min(LIMIT, what is left less 
 
 backend=${BACKEND:-device}
 parallel=${PARALLEL:-1}
+# A GPU in exclusive-process mode takes one process at a time.
+if [ "$parallel" -gt 1 ] && [ "$backend" = device ] &&
+   nvidia-smi --query-gpu=compute_mode --format=csv,noheader 2>/dev/null | grep -qi exclusive; then
+  echo "the GPU runs in exclusive-process mode: PARALLEL=$parallel becomes 1"
+  parallel=1
+fi
 
 simulate() {  # NAME CASE LIMIT
   local name=$1 case=$2 limit=$3
