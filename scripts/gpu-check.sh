@@ -95,7 +95,10 @@ simulate() {  # NAME CASE LIMIT
     (
       backend=cpu
       export OMP_NUM_THREADS=${CPU_THREADS:-12}
-      for c in $CPU_CASES; do simulate "$(basename "$c" .json)" "$c" 600 > "$work/runs/$(basename "$c" .json).summary" 2>&1; done
+      for c in $CPU_CASES; do
+        name=$(basename "$c" .json)
+        simulate "$name" "$c" 600 > "$work/runs/$name.summary" 2>&1
+      done
     ) &
     cpu_pid=$!
   fi
