@@ -8,8 +8,10 @@ forms, written before the runs:
     ln eta: docs/library.md, "What the level is known to").
 If the rows' form lands within about 2 % where the model's misses by 4-5 %, the level measured
 at N_a 12 can be carried between rows, and a denser N_a 12 grid pins a single point's level.
-  RBCAL_FAMILY=$PWD/data/library/default/surrogate_family.json python3 \
+  STEP_TO_16A=0.012 RBCAL_FAMILY=$PWD/data/library/default/surrogate_family.json python3 \
       studies/dense-anchors/blind_predictions_gap.py 12 > ALL12.csv
+(STEP_TO_16A: the anchors' own mean step n from the model's build_report.txt, which moves the
+family's bulk prediction back to the 16a gap; the script's default is an older twin step.)
   python3 studies/dense-anchors/level_from_anchors/row_predictions.py ALL12.csv > OUT.csv
 """
 import csv
