@@ -39,7 +39,7 @@ struct SurrogatePredictOptions {
 
 struct SurrogateFamilyOptions {
   std::vector<std::string> members;  // OFFSET=FILE
-  double prior_mean = 0.75, prior_sd = 0.15;
+  double prior_mean = 0.75, prior_sd = 0.05;  // the shipped family's prior
   double box_mean = std::nan(""), box_sd = std::nan("");  // the box correction's prior (both or neither)
   std::string box_source;
   std::string output;

@@ -44,9 +44,9 @@ struct EffectiveVolumeFractionOptions {
   double offset_slope = 0.0;
   // c at a given resolution.
   double offset_at(int nodes_per_radius) const { return offset + offset_slope * (1.0 / nodes_per_radius - 1.0 / 8.0); }
-  // The sd of c entered in each case's sd (see above; 0: not entered). The shipped recipe
-  // gives 0.05; this default is `rbcal library effective-phi`'s.
-  double offset_sd = 0.15;
+  // The sd of c entered in each case's sd (see above; 0: not entered). The default is the
+  // shipped recipe's (and `rbcal library effective-phi`'s).
+  double offset_sd = 0.05;
   // Runs whose g phi_actual exceeds this are left out (they stand for no physiological sample).
   double phi_max = 0.62;
   // Seed-scatter floor (only these three fields of ExtrapolationOptions are used).

@@ -4,7 +4,7 @@
 //   {"schema": "rbcal.model_recipe/1",
 //    "about": "...",                                   (optional; what this model is)
 //    "runs": ["../v2/n6", "../v2/n8"],                 (libraries of runs, any resolutions)
-//    "mapping": {"offset": 0.75, "offset_slope": 0, "offset_sd": 0.15, "phi_max": 0.62,
+//    "mapping": {"offset": 0.75, "offset_slope": 0, "offset_sd": 0.05, "phi_max": 0.62,
 //                "scatter_floor": 0.054, "scatter_phi": [0.05, 0.41]},
 //    "surrogate": {"sd_scale": "held_out"},            (or a number >= 1; optional)
 //    "family": {"offsets": [0.45, 0.6, 0.75, 0.9, 1.05], "prior": {"mean": 0.75, "sd": 0.15},
