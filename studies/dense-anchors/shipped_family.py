@@ -74,10 +74,25 @@ def first_order_extrapolation(by):
 # the way: the twins measured the step from the 8a gap to the 16a one directly, TWIN_STEP (the
 # same runs in both gaps; data/library/default/build_report.txt, "box correction from twin
 # runs"), so ln eta_16a = (1 + TWIN_STEP) / (1 + beta) ln eta_bulk.
-# STEP_TO_16A=N overrides it: a family whose box prior comes from the anchors themselves is
-# moved back to the 16a gap by the anchors' own mean step n (0.012 for the prior of 0.014 +-
-# 0.052 from every N_a 8 and 12 anchor; data/library/default/build_report.txt).
-TWIN_STEP = float(os.environ.get("STEP_TO_16A", "0.068"))
+# A family whose box prior comes from the anchors themselves is moved back to the 16a gap by
+# the anchors' own mean step n instead, read from the build_report.txt beside the family file
+# ("N anchors: mean beta +n"); the old twins' 0.068 applies only to a family whose prior came
+# from the twins alone (using it for an anchor-based family puts the predictions about 6 %
+# high). STEP_TO_16A=N overrides both.
+def _default_step():
+    if "anchor runs" not in BOX.get("source", ""):
+        return 0.068
+    report = os.path.join(os.path.dirname(os.path.abspath(FAMILY)), "build_report.txt")
+    if os.path.exists(report):
+        for line in open(report):
+            found = re.search(r"\d+ anchors: mean beta ([-+0-9.]+)", line)
+            if found:
+                return float(found.group(1))
+    sys.exit(f"{FAMILY}: its box prior comes from anchor runs, but no build_report.txt beside it gives "
+             "their mean step: set STEP_TO_16A (the report's 'anchors: mean beta')")
+
+
+TWIN_STEP = float(os.environ["STEP_TO_16A"]) if "STEP_TO_16A" in os.environ else _default_step()
 
 
 def in_gap(eta_bulk, sd_bulk=0.0, beta=BETA_MEAN):
