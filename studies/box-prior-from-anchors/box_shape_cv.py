@@ -63,13 +63,18 @@ def design(anchors, terms):
     return np.column_stack(columns)
 
 
-def held_out_rms(x, y, groups):
-    residuals = []
+def held_out_residuals(x, y, groups):
+    """Each group's residuals from the fit without it, by group in sorted order."""
+    out = {}
     for key in sorted(set(groups)):
         train = np.array([g != key for g in groups])
         coef, *_ = np.linalg.lstsq(x[train], y[train], rcond=None)
-        residuals.extend(y[~train] - x[~train] @ coef)
-    return float(np.sqrt(np.mean(np.square(residuals))))
+        out[key] = y[~train] - x[~train] @ coef
+    return out
+
+
+def rms(values):
+    return float(np.sqrt(np.mean(np.square(values))))
 
 
 def main():
@@ -77,21 +82,18 @@ def main():
         sys.exit(__doc__)
     anchors = read_anchors(sys.argv[1])
     y = np.array([a["beta"] for a in anchors])
+    rows = [a["row"] for a in anchors]
     print(f"{len(anchors)} anchors from {sys.argv[1]}")
-    print("shape                    in sample  row out  Ca out  N_a out   rows 0.30 / 0.40 / 0.50 out")
+    print(f"shape                    in sample  row out  Ca out  N_a out   rows {' / '.join(sorted(set(rows)))} out")
     for shape, terms in SHAPES.items():
         x = design(anchors, terms)
         coef, *_ = np.linalg.lstsq(x, y, rcond=None)
-        in_sample = float(np.sqrt(np.mean(np.square(y - x @ coef))))
-        rows = [a["row"] for a in anchors]
-        per_row = []
-        for key in sorted(set(rows)):
-            train = np.array([r != key for r in rows])
-            c, *_ = np.linalg.lstsq(x[train], y[train], rcond=None)
-            per_row.append(float(np.sqrt(np.mean(np.square(y[~train] - x[~train] @ c)))))
-        print(f"{shape:24s} {in_sample:9.3f} {held_out_rms(x, y, rows):8.3f} "
-              f"{held_out_rms(x, y, [a['ca'] for a in anchors]):7.3f} {held_out_rms(x, y, [a['na'] for a in anchors]):8.3f}"
-              f"   {' / '.join(f'{v:.3f}' for v in per_row)}")
+        by_row = held_out_residuals(x, y, rows)
+        by_ca = held_out_residuals(x, y, [a["ca"] for a in anchors])
+        by_tier = held_out_residuals(x, y, [a["na"] for a in anchors])
+        print(f"{shape:24s} {rms(y - x @ coef):9.3f} {rms(np.concatenate(list(by_row.values()))):8.3f} "
+              f"{rms(np.concatenate(list(by_ca.values()))):7.3f} {rms(np.concatenate(list(by_tier.values()))):8.3f}"
+              f"   {' / '.join(f'{rms(r):.3f}' for r in by_row.values())}")
     print("\nheld-out row under the constant prior rebuilt without it (z = (beta - mean) / hypot(scatter, se)):")
     for key in sorted({a["row"] for a in anchors}):
         train = np.array([a["beta"] for a in anchors if a["row"] != key])
