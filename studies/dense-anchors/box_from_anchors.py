@@ -15,7 +15,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from shipped_family import BETA_MEAN, BETA_SD, TWIN_STEP, anchor_runs, g, in_library_gap, member, point_parameters
+from shipped_family import BETA_MEAN, BETA_SD, anchor_runs, twin_step, g, in_library_gap, member, point_parameters
 
 OFFSETS = (0.45, 0.75, 1.05)
 
@@ -31,7 +31,7 @@ def beta_of(eta_run, sem_run, eta_member, sd_member):
 
 def main():
     print(f"the family's box correction for the bulk: beta {BETA_MEAN:.3f} +- {BETA_SD:.3f}; "
-          f"the twins' own step to the 16a gap {TWIN_STEP:.3f}")
+          f"the twins' own step to the 16a gap {twin_step():.3f}")
     print("| N_a 8 anchor | eta_re run | " + " | ".join(f"member c {c:g} | beta" for c in OFFSETS) + " |")
     print("|---|---|" + "---|---|" * len(OFFSETS))
     sums = {c: [0.0, 0.0] for c in OFFSETS}

@@ -4,6 +4,7 @@ prediction through `rbcal surrogate predict` (the scripts' one optional argument
 rbcal to call; default: this clone's build), and the finished anchors with their first-order
 extrapolation in 1/N_a. Imported by blind_predictions.py, implied_offset.py, resolution.py and
 asked_offset.py."""
+import functools
 import glob
 import json
 import math
@@ -71,15 +72,19 @@ def first_order_extrapolation(by):
 
 # The family's predictions are for the bulk: its box correction (beta at its prior mean, ln
 # eta_bulk = (1 + beta) ln eta_8a) is integrated into them. The anchors' 16a gap lies part of
-# the way: the twins measured the step from the 8a gap to the 16a one directly, TWIN_STEP (the
+# the way: the twins measured the step from the 8a gap to the 16a one directly, twin_step() (the
 # same runs in both gaps; data/library/default/build_report.txt, "box correction from twin
-# runs"), so ln eta_16a = (1 + TWIN_STEP) / (1 + beta) ln eta_bulk.
+# runs"), so ln eta_16a = (1 + twin_step()) / (1 + beta) ln eta_bulk.
 # A family whose box prior comes from the anchors themselves is moved back to the 16a gap by
 # the anchors' own mean step n instead, read from the build_report.txt beside the family file
 # ("N anchors: mean beta +n"); the old twins' 0.068 applies only to a family whose prior came
 # from the twins alone (using it for an anchor-based family puts the predictions about 6 %
-# high). STEP_TO_16A=N overrides both.
-def _default_step():
+# high). STEP_TO_16A=N overrides both. Found when first asked, so that the scripts that never
+# move a prediction to the 16a gap need neither.
+@functools.lru_cache(maxsize=None)
+def twin_step():
+    if "STEP_TO_16A" in os.environ:
+        return float(os.environ["STEP_TO_16A"])
     if "anchor runs" not in BOX.get("source", ""):
         return 0.068
     report = os.path.join(os.path.dirname(os.path.abspath(FAMILY)), "build_report.txt")
@@ -92,13 +97,10 @@ def _default_step():
              "their mean step: set STEP_TO_16A (the report's 'anchors: mean beta')")
 
 
-TWIN_STEP = float(os.environ["STEP_TO_16A"]) if "STEP_TO_16A" in os.environ else _default_step()
-
-
 def in_gap(eta_bulk, sd_bulk=0.0, beta=BETA_MEAN):
     """(eta, sd) in the 16a gap from a bulk prediction made with box correction beta (sd scaled
     to first order)."""
-    exponent = (1.0 + TWIN_STEP) / (1.0 + beta)
+    exponent = (1.0 + twin_step()) / (1.0 + beta)
     eta = math.exp(exponent * math.log(eta_bulk))
     return eta, exponent * eta / eta_bulk * sd_bulk
 
