@@ -101,3 +101,27 @@ TEST(Resume, ContinuesUnderAnotherCouplingIntervalOnlyWhenAsked) {
   EXPECT_NEAR(sp_b, sp_a, 0.01 * sp_a);
   fs::remove_all(root);
 }
+
+// A finished run continued to a later strain (run.strain_end and the window raised in the
+// case, then --resume) equals a run made to that strain at once: its last checkpoint, at its
+// end, is where the continuation starts.
+TEST(Resume, FinishedRunExtendsToALaterStrain) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "rbcal_resume_test_extend";
+  fs::remove_all(root);
+  SimulationCase longer = small_case();
+  longer.strain_end = 0.3;
+  longer.window = {0.1, 0.3};
+  const nlohmann::json a = test_cases::straight_run(longer, root / "straight");
+
+  RunOptions first;
+  first.output_dir = (root / "extended").string();
+  ASSERT_TRUE(run_case(small_case(), first).contains("result"));
+  first.resume = true;
+  const nlohmann::json b = run_case(longer, first);
+
+  EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
+  EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
+  EXPECT_EQ(slurp((root / "straight" / "series.csv").string()), slurp((root / "extended" / "series.csv").string()));
+  fs::remove_all(root);
+}
