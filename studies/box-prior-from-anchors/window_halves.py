@@ -16,7 +16,7 @@ import numpy as np
 groups = {"16a anchors": "data/library/anchors/results/*.series.csv",
           "8a twins": "data/library/anchors/twins/results/*.series.csv"}
 for group, pattern in groups.items():
-    ratios = []
+    ratios, drifts = [], []
     for f in sorted(glob.glob(pattern)):
         d = np.genfromtxt(f, delimiter=",", names=True)
         strain, eta = d["strain"], d["eta_re_stresslet"]
@@ -27,7 +27,10 @@ for group, pattern in groups.items():
         second = eta[(strain >= mid) & (strain <= hi)].mean()
         ratio = (second - first) / (2.0 * r["eta_re_sem"])
         ratios.append(ratio)
+        drifts.append(np.log(second / first))
         print(f"{os.path.basename(f)[:-11]:40s} eta_re {r['eta_re']:.3f} +- {r['eta_re_sem']:.3f}  halves "
               f"{first:.3f} / {second:.3f}  diff / (2 sem) {ratio:+.1f}")
     rms = float(np.sqrt(np.mean(np.square(ratios))))
-    print(f"{group}: {len(ratios)} runs, RMS of diff / (2 sem) {rms:.2f}\n")
+    beyond = sum(abs(x) > 3 for x in ratios)
+    print(f"{group}: {len(ratios)} runs, RMS of diff / (2 sem) {rms:.2f}, {beyond} beyond 3; "
+          f"RMS of ln(second / first) {np.sqrt(np.mean(np.square(drifts))):.3f}\n")
