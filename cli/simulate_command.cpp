@@ -29,11 +29,8 @@ struct SimulateOptions {
 
 // The window's late half against its early half, and a warning where it drifts.
 std::string drift_line(const nlohmann::json& r) {
-  if (!r.contains("eta_re_drift")) return "";
-  solver::WindowDrift d;
-  d.available = true;
-  d.drift = r["eta_re_drift"].get<double>();
-  d.sd = r["eta_re_drift_sd"].get<double>();
+  const solver::WindowDrift d = solver::drift_of_result(r);
+  if (!d.available) return "";
   std::ostringstream s;
   s << std::showpos << std::fixed << std::setprecision(1) << "  drift over the window " << 100.0 * d.drift << " % +- "
     << std::noshowpos << 100.0 * d.sd << " % (late half against early half)\n";

@@ -25,4 +25,13 @@ bool drifts(const WindowDrift& d) {
   return d.available && std::abs(d.drift) > kDriftFloor && std::abs(d.z()) > kDriftZ;
 }
 
+WindowDrift drift_of_result(const nlohmann::json& result) {
+  WindowDrift d;
+  if (!result.contains("eta_re_drift") || !result.contains("eta_re_drift_sd")) return d;
+  d.available = true;
+  d.drift = result["eta_re_drift"].get<double>();
+  d.sd = result["eta_re_drift_sd"].get<double>();
+  return d;
+}
+
 }  // namespace rbcal::solver

@@ -6,6 +6,7 @@
 // A stationary run keeps |drift| within a few sd; a run still relaxing (dense suspensions
 // whose seeded layers dissolve over tens of strain units) or one with fluctuations slower than
 // the blocking can see shows more, and then its blocking error understates its error.
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace rbcal::solver {
@@ -26,5 +27,9 @@ WindowDrift window_drift(const std::vector<double>& series);
 
 // Beyond kDriftZ sd and kDriftFloor: the window is not stationary.
 bool drifts(const WindowDrift& d);
+
+// The drift a result block (result.json's "result") records; not available in results
+// written before the field.
+WindowDrift drift_of_result(const nlohmann::json& result);
 
 }  // namespace rbcal::solver

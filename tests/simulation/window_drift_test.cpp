@@ -78,3 +78,14 @@ TEST(WindowDrift, TooShortOrNotPositiveIsNotAvailable) {
   EXPECT_TRUE(window_drift(std::vector<double>(32, 2.0)).available);
   EXPECT_FALSE(window_drift(std::vector<double>(64, -1.0)).available);
 }
+
+TEST(WindowDrift, ReadFromAResultBlock) {
+  // What rbcal simulate and library generate print: the fields of result.json, when there.
+  EXPECT_FALSE(drift_of_result(nlohmann::json{{"eta_re", 2.0}}).available);
+  const WindowDrift d = drift_of_result(nlohmann::json{{"eta_re_drift", 0.094}, {"eta_re_drift_sd", 0.0286}});
+  ASSERT_TRUE(d.available);
+  EXPECT_NEAR(d.z(), 3.29, 0.01);
+  EXPECT_TRUE(drifts(d));
+  // Past 3 sd but within 2 %: a very steady run's tiny drift is not reported.
+  EXPECT_FALSE(drifts(drift_of_result(nlohmann::json{{"eta_re_drift", 0.015}, {"eta_re_drift_sd", 0.001}})));
+}
