@@ -3,8 +3,8 @@
 #include "formats/write_error.hpp"
 
 #include <chrono>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
