@@ -352,7 +352,7 @@ class CaseRun {
     };
     // The window's late half against its early half: a drift of several sd says the blocking
     // error understates the run's error (a longer run, raised strain_end and --resume, tells).
-    const WindowDrift drift = window_drift(window_.stresslet);
+    const WindowDrift drift = window_drift(window_.stresslet, eta.mean > 0.0 ? eta.sem / eta.mean : 0.0);
     if (drift.available) {
       j["result"]["eta_re_drift"] = drift.drift;
       j["result"]["eta_re_drift_sd"] = drift.sd;

@@ -1,8 +1,9 @@
 #pragma once
 // Whether a windowed average is stationary: the window's late half against its early half,
 // drift = ln(mean_late / mean_early). Its sd is twice the whole window's relative blocking
-// error (each half's mean has sqrt(2) times the whole's error): the whole window reaches
-// longer blocks than either half, whose own blocking errors fall short on slow series.
+// error, the run's eta_re_sem / eta_re (each half's mean has sqrt(2) times the whole's error):
+// the whole window reaches longer blocks than either half, whose own blocking errors fall
+// short on slow series.
 // A stationary run keeps |drift| within a few sd; a run still relaxing (dense suspensions
 // whose seeded layers dissolve over tens of strain units) or one with fluctuations slower than
 // the blocking can see shows more, and then its blocking error understates its error.
@@ -22,8 +23,9 @@ struct WindowDrift {
 inline constexpr double kDriftZ = 3.0;
 inline constexpr double kDriftFloor = 0.02;
 
-// The drift of a window's series (its samples in order); not available below 32 samples.
-WindowDrift window_drift(const std::vector<double>& series);
+// The drift of a window's series (its samples in order), given the relative standard error of
+// the whole window's mean; not available below 32 samples.
+WindowDrift window_drift(const std::vector<double>& series, double relative_sem);
 
 // Beyond kDriftZ sd and kDriftFloor: the window is not stationary.
 bool drifts(const WindowDrift& d);

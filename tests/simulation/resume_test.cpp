@@ -25,6 +25,15 @@ SimulationCase small_case() { return test_cases::small_sheared_case(MembraneLaw:
 
 }  // namespace
 
+// Two runs of one case, their results and output folders: they agree bit for bit.
+void expect_same_run(const nlohmann::json& a, const std::filesystem::path& dir_a, const nlohmann::json& b,
+                     const std::filesystem::path& dir_b) {
+  EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
+  EXPECT_EQ(a["result"]["eta_re_wall"].get<double>(), b["result"]["eta_re_wall"].get<double>());
+  EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
+  EXPECT_EQ(slurp((dir_a / "series.csv").string()), slurp((dir_b / "series.csv").string()));
+}
+
 // Runs c straight and again stopped after max_steps and resumed; both must agree bit for bit.
 void expect_resume_equals_straight(const SimulationCase& c, const std::string& name, std::int64_t max_steps) {
   namespace fs = std::filesystem;
@@ -34,12 +43,7 @@ void expect_resume_equals_straight(const SimulationCase& c, const std::string& n
   const nlohmann::json a = test_cases::straight_run(c, root / "straight");
   const RunOptions resume = test_cases::interrupted_run(c, root / "interrupted", max_steps);
   const nlohmann::json b = run_case(c, resume);
-
-  EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
-  EXPECT_EQ(a["result"]["eta_re_wall"].get<double>(), b["result"]["eta_re_wall"].get<double>());
-  EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
-  EXPECT_EQ(slurp((root / "straight" / "series.csv").string()),
-            slurp((root / "interrupted" / "series.csv").string()));
+  expect_same_run(a, root / "straight", b, root / "interrupted");
   fs::remove_all(root);
 }
 
@@ -119,9 +123,6 @@ TEST(Resume, FinishedRunExtendsToALaterStrain) {
   ASSERT_TRUE(run_case(small_case(), first).contains("result"));
   first.resume = true;
   const nlohmann::json b = run_case(longer, first);
-
-  EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
-  EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
-  EXPECT_EQ(slurp((root / "straight" / "series.csv").string()), slurp((root / "extended" / "series.csv").string()));
+  expect_same_run(a, root / "straight", b, root / "extended");
   fs::remove_all(root);
 }
