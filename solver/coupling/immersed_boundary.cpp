@@ -48,9 +48,8 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
 
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order) {
-  // Counting sort by the lattice index (x * ny + y) * nz + z of the stencil's first node;
-  // stable, so the order (and every sum that follows it) does not depend on the thread
-  // count.
+  // Sorted by the lattice index (x * ny + y) * nz + z of the stencil's first node; stable,
+  // so the order (and every sum that follows it) does not depend on the thread count.
   // The modulo only where a support starts outside the box (an integer division per
   // coordinate was a fifth of this function's time).
   if (nx > INT16_MAX || ny > INT16_MAX || nz > INT16_MAX)  // KernelStencil's indices
@@ -63,9 +62,9 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     return lattice_index(x, y, z, ny, nz);
   };
   const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
-  // Only the counting and the placing of (cell, node) pairs are serial; the keys before
-  // them, and the copies and stencils after them, run in parallel (the serial version,
-  // which also copied positions and forces into place, was a third of a step's waiting).
+  // The keys and the (cell, node) pairs in mesh order, then the sort, which is serial;
+  // the copies and stencils after it run in parallel (the serial version, which also
+  // copied positions and forces into place, was a third of a step's waiting).
   auto& first = order.cell_first;
   first.resize(positions.size() + 1);
   first[0] = 0;
@@ -73,25 +72,31 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   const std::size_t total = first.back();
   auto& key = order.key;
   key.resize(total);
+  order.mesh_order.resize(total);
   const long cells = static_cast<long>(positions.size());
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < cells; ++c) {
     std::uint32_t* k = key.data() + first[c];
-    for (const Vec3& p : positions[c]) *k++ = static_cast<std::uint32_t>(key_of(p));
+    auto* pair = order.mesh_order.data() + first[c];
+    for (std::size_t n = 0; n < positions[c].size(); ++n) {
+      k[n] = static_cast<std::uint32_t>(key_of(positions[c][n]));
+      pair[n] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
+    }
   }
-  auto& start = order.start;
-  start.assign(keys + 1, 0);
-  for (const std::uint32_t k : key) ++start[k + 1];
-  for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
+  const std::vector<std::uint64_t>& sorted = order.sort(key, keys);
   const int slabs = NodeOrder::slab_count(nx);
   order.slab_start.resize(slabs + 1);
-  for (int s = 0; s <= slabs; ++s)
-    order.slab_start[s] = start[std::min(keys, static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz)];
+  for (int s = 0; s <= slabs; ++s) {
+    const std::size_t bound = std::min(keys, static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz);
+    order.slab_start[s] = static_cast<std::size_t>(
+        std::partition_point(sorted.begin(), sorted.end(),
+                             [&](std::uint64_t r) { return key_of_record(r) < bound; }) -
+        sorted.begin());
+  }
   order.nodes.resize(total);
-  std::size_t g = 0;
-  for (std::size_t c = 0; c < positions.size(); ++c)
-    for (std::size_t n = 0; n < positions[c].size(); ++n)
-      order.nodes[start[key[g++]]++] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < static_cast<long>(total); ++i)
+    order.nodes[i] = order.mesh_order[index_of_record(sorted[i])];
   order.position.resize(total);
   order.force.resize(total);
   order.stencil.resize(total);

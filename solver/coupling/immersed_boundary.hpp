@@ -12,6 +12,7 @@
 
 #include "solver/coupling/kernel_stencil.hpp"
 #include "solver/coupling/peskin_kernel.hpp"
+#include "solver/coupling/stable_key_sort.hpp"
 #include "solver/fluid/fluid_lattice.hpp"
 #include "solver/membrane/triangle_mesh.hpp"
 
@@ -38,8 +39,12 @@ struct NodeOrder {
   // and again by the interpolation that follows the fluid step (the nodes have not moved).
   std::vector<KernelStencil> stencil;
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
-  std::vector<std::uint32_t> key, start;                       // scratch of the counting sort
-  std::vector<std::size_t> cell_first;                         // scratch: first global node of each cell
+  // Scratch: each node's key and (cell, node) in mesh order, the sort, the first node of
+  // each cell in mesh order.
+  std::vector<std::uint32_t> key;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> mesh_order;
+  StableKeySort sort;
+  std::vector<std::size_t> cell_first;
 };
 // How spread_forces visits the x-slabs of a lattice nx wide: two parallel phases, in each of
 // which no two slabs write a common lattice column (periodic wrap included, for the widest
