@@ -16,6 +16,9 @@ constexpr double kLineOffsetY = 1.0e-7 * 2.71828182845905;
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
+// floor(i / n) for n > 0.
+int floor_div(int i, int n) { return i >= 0 ? i / n : -((-i + n - 1) / n); }
+
 // Lattice columns (x) per chunk of the parallel apply.
 constexpr int kColumnsPerChunk = 2;
 
@@ -33,13 +36,13 @@ void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positio
                             const std::vector<Triangle>& triangles) {
   // Clear the previous footprint (each node listed once: parallel), keep it as previous_.
   previous_.swap(inside_);
-  const long previous = static_cast<long>(previous_.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < previous; ++i) {
-    alpha_[previous_[i]] = 0.0;
-    marked_[previous_[i]] = 0;
-  }
-  inside_.clear();
+  const long previous_chunks = static_cast<long>(previous_.size());
+#pragma omp parallel for schedule(dynamic)
+  for (long k = 0; k < previous_chunks; ++k)
+    for (const std::size_t node : previous_[k]) {
+      alpha_[node] = 0.0;
+      marked_[node] = 0;
+    }
   // The scan-line crossings of each mesh are independent (parallel).
   crossings_.resize(positions.size());
 #pragma omp parallel for schedule(dynamic)
@@ -51,16 +54,16 @@ void InsideFraction::update(const std::vector<const std::vector<Vec3>*>& positio
   // Applying them to alpha: neighbouring cells share boundary nodes, but a node lies in
   // one lattice column, so chunks of columns run in parallel. Within a chunk the cells
   // go in order, so every node sums its cells in the same order as a serial pass would,
-  // whatever the thread count; the nodes each chunk reaches are joined in chunk order.
+  // whatever the thread count; the footprint stays in the chunks' lists (joining them was
+  // a tenth of a rebuild).
   const int chunks = (nx_ + kColumnsPerChunk - 1) / kColumnsPerChunk;
-  reached_.resize(chunks);
+  inside_.resize(chunks);
 #pragma omp parallel for schedule(dynamic)
   for (int k = 0; k < chunks; ++k) {
-    reached_[k].clear();
+    inside_[k].clear();
     const int lo = k * kColumnsPerChunk, hi = std::min(nx_, lo + kColumnsPerChunk);
-    for (const Crossings& c : crossings_) apply(c, lo, hi, reached_[k]);
+    for (const Crossings& c : crossings_) apply(c, lo, hi, inside_[k]);
   }
-  for (const auto& r : reached_) inside_.insert(inside_.end(), r.begin(), r.end());
 }
 
 void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles,
@@ -88,8 +91,10 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
   out.pbase = pbase;
   out.qbase = qbase;
   out.qcount = qcount;
+  // The crossings are hits[0, found): the buffer keeps its size between updates and grows
+  // only when a mesh needs more.
   auto& hits = out.unsorted;
-  hits.clear();
+  std::size_t found = 0;
   for (const Triangle& t : triangles) {
     const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
     const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
@@ -100,6 +105,13 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
     const int p1 = last_line(std::max({a.x(), b.x(), c.x()}), kLineOffsetX);
     const int q0 = first_line(std::min({a.y(), b.y(), c.y()}), kLineOffsetY);
     const int q1 = last_line(std::max({a.y(), b.y(), c.y()}), kLineOffsetY);
+    if (p1 < p0 || q1 < q0) continue;
+    // Every line of the triangle's box is tested and written; only those inside advance
+    // the end (the test's outcome is a coin toss per line, and a mispredicted branch on it
+    // cost more than the test).
+    const std::size_t room = static_cast<std::size_t>(p1 - p0 + 1) * (q1 - q0 + 1);
+    if (found + room > hits.size()) hits.resize(std::max(2 * hits.size(), found + room));
+    Hit* const slot = hits.data();
     for (int p = p0; p <= p1; ++p)
       for (int q = q0; q <= q1; ++q) {
         const double px = line_x(p), py = line_y(q);
@@ -107,17 +119,17 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
         const double wa = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) * inv_area2;
         const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) * inv_area2;
         const double wc = 1.0 - wa - wb;
-        if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-        hits.push_back({(p - pbase) * qcount + (q - qbase), wa * a.z() + wb * b.z() + wc * c.z(), sign});
+        slot[found] = {(p - pbase) * qcount + (q - qbase), wa * a.z() + wb * b.z() + wc * c.z(), sign};
+        found += (wa >= 0.0) & (wb >= 0.0) & (wc >= 0.0);
       }
   }
   // Order by line (counting sort), then by z within each line (a handful of hits each).
   auto& start = out.line_start;
   start.assign(static_cast<std::size_t>(pcount) * qcount + 1, 0);
-  for (const Hit& h : hits) ++start[h.line + 1];
+  for (std::size_t h = 0; h < found; ++h) ++start[hits[h].line + 1];
   for (std::size_t l = 1; l < start.size(); ++l) start[l] += start[l - 1];
-  out.hits.resize(hits.size());
-  for (const Hit& h : hits) out.hits[start[h.line]++] = h;  // start[l] ends as the end of line l
+  out.hits.resize(found);
+  for (std::size_t h = 0; h < found; ++h) out.hits[start[hits[h].line]++] = hits[h];  // start[l]: then the end of line l
   for (std::size_t l = 0, begin = 0; l + 1 < start.size(); begin = start[l], ++l)
     for (std::size_t m = begin + 1; m < static_cast<std::size_t>(start[l]); ++m)
       for (std::size_t k = m; k > begin && out.hits[k].z < out.hits[k - 1].z; --k) std::swap(out.hits[k], out.hits[k - 1]);
@@ -130,34 +142,41 @@ void InsideFraction::apply(const Crossings& c, int column_lo, int column_hi, std
   // The mesh's lines from column p: lines (p - pbase) qcount ... + qcount - 1, hits found
   // through line_start (after the sort, line_start[l] is the end of line l's hits).
   const int pcount = static_cast<int>((c.line_start.size() - 1) / qcount);
-  for (int pl = 0; pl < pcount; ++pl) {
-    const int p = pbase + pl;
-    const int i = static_cast<int>(std::floor(static_cast<double>(p) / sub_));
-    const int column_x = wrap(i, nx_);
-    if (column_x < column_lo || column_x >= column_hi) continue;
-    for (int ql = 0; ql < qcount; ++ql) {
-      const int line = pl * qcount + ql;
-      const std::size_t begin = line == 0 ? 0 : c.line_start[line - 1], end = c.line_start[line];
-      if (end - begin < 2) continue;
-      const int q = qbase + ql;
-      const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
-      if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
-      const std::size_t column = (static_cast<std::size_t>(column_x) * ny_ + j) * nz_;
-      int winding = 0;
-      for (std::size_t m = begin; m + 1 < end; ++m) {
-        winding += c.hits[m].sign;
-        if (winding <= 0) continue;
-        // [z0, z1] is inside: give each node k the overlap with [k - 1/2, k + 1/2].
-        const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
-        const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
-        for (int k = k0; k <= k1; ++k) {
-          const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);
-          if (overlap <= 0.0) continue;
-          const std::size_t node = column + wrap(k, nz_);
-          alpha_[node] = std::min(1.0, alpha_[node] + weight * overlap);
-          if (!marked_[node]) {
-            marked_[node] = 1;
-            reached.push_back(node);
+  // Only the lines in the chunk's columns, found per periodic image of the chunk (the mesh
+  // is narrower than the box, so a few images), in ascending p as a pass over all lines
+  // would visit them (every chunk testing every line of every mesh cost a sixth of this
+  // function's time).
+  const int first_column = floor_div(pbase, sub_), last_column = floor_div(pbase + pcount - 1, sub_);
+  for (int image = floor_div(first_column, nx_) - 1; image <= floor_div(last_column, nx_) + 1; ++image) {
+    const int p_end = std::min(pbase + pcount, (column_hi + image * nx_) * sub_);
+    for (int p = std::max(pbase, (column_lo + image * nx_) * sub_); p < p_end; ++p) {
+      const int pl = p - pbase;
+      const int column_x = floor_div(p, sub_) - image * nx_;
+      for (int ql = 0; ql < qcount; ++ql) {
+        const int line = pl * qcount + ql;
+        const std::size_t begin = line == 0 ? 0 : c.line_start[line - 1], end = c.line_start[line];
+        if (end - begin < 2) continue;
+        const int q = qbase + ql;
+        const int j = static_cast<int>(std::floor(static_cast<double>(q) / sub_));
+        if (j < 0 || j >= ny_) continue;  // beyond a wall: no nodes
+        const std::size_t column = (static_cast<std::size_t>(column_x) * ny_ + j) * nz_;
+        int winding = 0;
+        for (std::size_t m = begin; m + 1 < end; ++m) {
+          winding += c.hits[m].sign;
+          if (winding <= 0) continue;
+          // [z0, z1] is inside: give each node k the overlap with [k - 1/2, k + 1/2].
+          const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
+          const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
+          // k wrapped into the box once per interval, then stepped.
+          for (int k = k0, kz = wrap(k0, nz_); k <= k1; ++k, kz = kz + 1 < nz_ ? kz + 1 : 0) {
+            const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);
+            if (overlap <= 0.0) continue;
+            const std::size_t node = column + kz;
+            alpha_[node] = std::min(1.0, alpha_[node] + weight * overlap);
+            if (!marked_[node]) {
+              marked_[node] = 1;
+              reached.push_back(node);
+            }
           }
         }
       }

@@ -29,10 +29,12 @@ class InsideFraction {
 
   const std::vector<double>& alpha() const { return alpha_; }
   // Nodes whose alpha may have changed in the last update (for incremental viscosity
-  // updates): the footprint before it and the footprint after it, each node once per list
-  // (a node can be in both), so that either list can be walked in parallel.
-  const std::vector<std::size_t>& previous_footprint() const { return previous_; }
-  const std::vector<std::size_t>& footprint() const { return inside_; }
+  // updates): the footprint before it and the footprint after it, as lists by chunk of
+  // lattice columns, each node once per footprint (a node can be in both), so that the
+  // lists can be walked in parallel.
+  using Footprint = std::vector<std::vector<std::size_t>>;
+  const Footprint& previous_footprint() const { return previous_; }
+  const Footprint& footprint() const { return inside_; }
 
  private:
   // Signed z-crossings of one mesh on the scan lines of its bounding box, sorted by
@@ -57,10 +59,9 @@ class InsideFraction {
   int nx_, ny_, nz_;
   int sub_;  // scan lines per lattice spacing in x and in y
   std::vector<double> alpha_;
-  std::vector<std::size_t> inside_;  // nodes with alpha > 0, each once
+  Footprint inside_;  // nodes with alpha > 0, each once, by column chunk (reused)
   std::vector<unsigned char> marked_;  // 1 for the nodes in inside_
-  std::vector<std::size_t> previous_;  // inside_ before the last update
-  std::vector<std::vector<std::size_t>> reached_;  // per column chunk, reused between updates
+  Footprint previous_;  // inside_ before the last update
   std::vector<Crossings> crossings_;  // per mesh, reused between updates
 };
 

@@ -156,11 +156,11 @@ void ShearFlowSimulation::rebuild_viscosity() {
   const double* alpha = inside_.alpha().data();
   const double nu_out = units_.nu_out;
   // The footprints before and after the update, each without repeats (so parallel).
-  for (const std::vector<std::size_t>* nodes : {&inside_.previous_footprint(), &inside_.footprint()}) {
-    const long count = static_cast<long>(nodes->size());
-    const std::size_t* n = nodes->data();
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < count; ++i) nu[n[i]] = nu_out * (1.0 + (lambda - 1.0) * alpha[n[i]]);
+  for (const InsideFraction::Footprint* chunks : {&inside_.previous_footprint(), &inside_.footprint()}) {
+    const long count = static_cast<long>(chunks->size());
+#pragma omp parallel for schedule(dynamic)
+    for (long k = 0; k < count; ++k)
+      for (const std::size_t n : (*chunks)[k]) nu[n] = nu_out * (1.0 + (lambda - 1.0) * alpha[n]);
   }
 }
 
