@@ -44,7 +44,7 @@ struct DeviceHostState {
   std::vector<std::vector<Vec3>>* velocities;
   std::vector<std::vector<Vec3>>* forces;
   std::vector<std::vector<Vec3>>* indicator_positions;  // empty: not built yet
-  std::vector<double>* velocity_sum;              // FluidLattice::component_stride layout
+  AlignedVector<double>* velocity_sum;            // FluidLattice::component_stride layout
   int* velocity_sum_steps;
 };
 

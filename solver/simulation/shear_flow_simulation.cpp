@@ -280,7 +280,7 @@ void ShearFlowSimulation::save_checkpoint(const std::string& path) const {
   // Inside an interval the velocity summed so far is part of the state (a sum is held only
   // there: the membrane update that ends an interval resets it).
   if (u_field_steps_ > 0) {
-    s.velocity_sum = u_field_;
+    s.velocity_sum.assign(u_field_.begin(), u_field_.end());
     s.velocity_sum_steps = u_field_steps_;
   }
   write_checkpoint(path, s);
@@ -327,7 +327,7 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
   const bool inside_interval = s.steps % case_.coupling_interval != 0;
   if (inside_interval && case_.node_velocity == NodeVelocity::IntervalMean && s.velocity_sum_steps > 0 &&
       s.velocity_sum.size() == 3 * FluidLattice::component_stride(fluid_.node_count())) {
-    u_field_ = std::move(s.velocity_sum);
+    u_field_.assign(s.velocity_sum.begin(), s.velocity_sum.end());
     u_field_steps_ = static_cast<int>(s.velocity_sum_steps);
   }
   x_ = std::move(s.positions);
