@@ -29,14 +29,23 @@ bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.
 void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz) {
   if (contiguous_z4(s)) {
     const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
-    const v4d fz[3] = {wz * force[0], wz * force[1], wz * force[2]};
-    for (int a = 0; a < 4; ++a)
+    const v4d fz0 = wz * force[0], fz1 = wz * force[1], fz2 = wz * force[2];
+    // The component pointers in locals: read through f[d] they were reloaded after every
+    // store (the spreading 7-8 % dearer on the bench case).
+    double* const f0 = f[0];
+    double* const f1 = f[1];
+    double* const f2 = f[2];
+    for (int a = 0; a < 4; ++a) {
+      const std::size_t column = static_cast<std::size_t>(s.x[a]) * ny;
       for (int b = 0; b < 4; ++b) {
         const double wab = s.wx[a] * s.wy[b];
         if (wab == 0.0) continue;
-        const std::size_t at = lattice_index(s.x[a], s.y[b], s.z[0], ny, nz);
-        for (int d = 0; d < 3; ++d) store4(f[d] + at, load4(f[d] + at) + wab * fz[d]);
+        const std::size_t at = (column + s.y[b]) * nz + s.z[0];
+        store4(f0 + at, load4(f0 + at) + wab * fz0);
+        store4(f1 + at, load4(f1 + at) + wab * fz1);
+        store4(f2 + at, load4(f2 + at) + wab * fz2);
       }
+    }
     return;
   }
   for_each_stencil_node(s, ny, nz, [&](std::size_t node, double w) {
