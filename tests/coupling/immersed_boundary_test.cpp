@@ -3,7 +3,10 @@
 // exact interpolation of linear velocity fields.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
+#include <utility>
 
 #include "solver/coupling/immersed_boundary.hpp"
 
@@ -185,5 +188,52 @@ TEST(Spreading, ParallelSlabsEqualASerialSum) {
       }
     for (std::size_t n = 0; n < fluid.node_count(); ++n)
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(fluid.force(k)[n], expected[3 * n + k], 1e-13) << "nx " << nx << " node " << n;
+  }
+}
+
+TEST(NodeOrder, SortsStablyByTheSupportStartOnSmallAndLargeLattices) {
+  // 300 nodes on 12^3 nodes (a counting sort) and on 64 x 48 x 80 (a radix sort): the nodes
+  // in the order of their stencil's first lattice node, ties in (cell, node) order, the
+  // slabs' starts where the keys cross a slab, and the copies those of the nodes named.
+  for (const auto& [nx, ny, nz] : {std::array{12, 12, 12}, std::array{64, 48, 80}}) {
+    std::mt19937_64 rng(static_cast<unsigned>(nx));
+    std::uniform_real_distribution<double> px(-2.0, nx + 2.0), py(0.0, ny - 1.0), pz(-2.0, nz + 2.0), frc(-1.0, 1.0);
+    std::vector<std::vector<Vec3>> x(3), f(3);
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 100; ++i) {
+        // Every fifth node shares its predecessor's support: ties to keep in order.
+        x[c].push_back(i % 5 == 4 ? x[c].back() + Vec3(0.01, 0.0, 0.0) : Vec3(px(rng), py(rng), pz(rng)));
+        f[c].emplace_back(frc(rng), frc(rng), frc(rng));
+      }
+    NodeOrder order;
+    order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
+    auto key_of = [&](const Vec3& p) {
+      const KernelStencil s = make_stencil(KernelKind::Peskin4, p, nx, ny, nz);
+      const int y = std::clamp(support_start(KernelKind::Peskin4, p.y()), 0, ny - 1);
+      return lattice_index(s.x[0], y, s.z[0], ny, nz);
+    };
+    ASSERT_EQ(order.nodes.size(), 300u);
+    for (std::size_t i = 0; i < order.nodes.size(); ++i) {
+      const auto [c, n] = order.nodes[i];
+      EXPECT_EQ(order.position[i], x[c][n]);
+      EXPECT_EQ(order.force[i], f[c][n]);
+      EXPECT_EQ(order.stencil[i].wz, make_stencil(KernelKind::Peskin4, x[c][n], nx, ny, nz).wz);
+      if (i == 0) continue;
+      const auto [pc, pn] = order.nodes[i - 1];
+      const std::size_t k = key_of(x[c][n]), pk = key_of(x[pc][pn]);
+      ASSERT_LE(pk, k) << "position " << i;
+      if (pk == k) {
+        EXPECT_LT(std::pair(pc, pn), std::pair(c, n)) << "a tie out of order at " << i;
+      }
+    }
+    for (int s = 0; s <= NodeOrder::slab_count(nx); ++s) {
+      const std::size_t bound = std::min<std::size_t>(static_cast<std::size_t>(s) * NodeOrder::slab_width * ny * nz,
+                                                      static_cast<std::size_t>(nx) * ny * nz);
+      std::size_t expected = 0;
+      while (expected < order.nodes.size() &&
+             key_of(x[order.nodes[expected].first][order.nodes[expected].second]) < bound)
+        ++expected;
+      EXPECT_EQ(order.slab_start[s], expected) << "slab " << s;
+    }
   }
 }
