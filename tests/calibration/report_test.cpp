@@ -229,7 +229,9 @@ TEST_F(ReportTest, HtmlPageHoldsHeadlinesWarningsPlotsAndProvenance) {
   EXPECT_NE(page.find("direct fit"), std::string::npos);
   EXPECT_NE(page.find("<h2>Provenance</h2>"), std::string::npos);
   EXPECT_EQ(page.find("src=\"http"), std::string::npos) << "the page fetches something";
-  if (files.plots_written) EXPECT_NE(page.find("<svg"), std::string::npos) << "plots written but not inlined";
+  if (files.plots_written) {
+    EXPECT_NE(page.find("<svg"), std::string::npos) << "plots written but not inlined";
+  }
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(folder / "summary.json"));
   EXPECT_NE(std::find(summary["files"].begin(), summary["files"].end(), "report.html"), summary["files"].end());
 }
