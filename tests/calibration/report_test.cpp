@@ -62,7 +62,8 @@ CalibrationReport make_report(const AnalyticViscosityModel& model) {
   }
   report.comparison = SampleComparisonReport{"hardened, fixed", "intact",
                                              compare_shear_moduli(report.samples[1].mcmc->shear_modulus_draws(),
-                                                                  report.samples[0].mcmc->shear_modulus_draws())};
+                                                                  report.samples[0].mcmc->shear_modulus_draws()),
+                                             std::string{}};
   return report;
 }
 
@@ -224,7 +225,8 @@ TEST_F(ReportTest, HtmlPageHoldsHeadlinesWarningsPlotsAndProvenance) {
   ASSERT_TRUE(in) << "no report.html";
   const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
-  for (const std::string& sample : {"intact", "hardened, fixed"}) EXPECT_NE(page.find("<h2>" + sample + "</h2>"), std::string::npos) << sample;
+  for (const std::string sample : {"intact", "hardened, fixed"})
+    EXPECT_NE(page.find("<h2>" + sample + "</h2>"), std::string::npos) << sample;
   EXPECT_NE(page.find("warning: a test warning"), std::string::npos);
   EXPECT_NE(page.find("direct fit"), std::string::npos);
   EXPECT_NE(page.find("<h2>Provenance</h2>"), std::string::npos);
