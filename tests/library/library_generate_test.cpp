@@ -9,17 +9,18 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "tests/simulation/same_run.hpp"
+
 extern char** environ;
 
 namespace fs = std::filesystem;
+using rbcal::solver::test_cases::slurp;
 
 namespace {
 
@@ -65,13 +66,6 @@ void kill_when(const fs::path& lib, Ready ready) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   ::kill(pid, SIGKILL);
   wait_for(pid);
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace

@@ -3,36 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "solver/simulation/case_runner.hpp"
 #include "tests/simulation/interrupted_run.hpp"
+#include "tests/simulation/same_run.hpp"
 #include "tests/simulation/small_sheared_case.hpp"
 
 using namespace rbcal::solver;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 SimulationCase small_case() { return test_cases::small_sheared_case(MembraneLaw::NeoHookean); }
 
 }  // namespace
-
-// Two runs of one case, their results and output folders: they agree bit for bit.
-void expect_same_run(const nlohmann::json& a, const std::filesystem::path& dir_a, const nlohmann::json& b,
-                     const std::filesystem::path& dir_b) {
-  EXPECT_EQ(a["result"]["eta_re"].get<double>(), b["result"]["eta_re"].get<double>());
-  EXPECT_EQ(a["result"]["eta_re_wall"].get<double>(), b["result"]["eta_re_wall"].get<double>());
-  EXPECT_EQ(a["result"]["steps"], b["result"]["steps"]);
-  EXPECT_EQ(slurp((dir_a / "series.csv").string()), slurp((dir_b / "series.csv").string()));
-}
 
 // Runs c straight and again stopped after max_steps and resumed; both must agree bit for bit.
 void expect_resume_equals_straight(const SimulationCase& c, const std::string& name, std::int64_t max_steps) {
@@ -43,7 +26,7 @@ void expect_resume_equals_straight(const SimulationCase& c, const std::string& n
   const nlohmann::json a = test_cases::straight_run(c, root / "straight");
   const RunOptions resume = test_cases::interrupted_run(c, root / "interrupted", max_steps);
   const nlohmann::json b = run_case(c, resume);
-  expect_same_run(a, root / "straight", b, root / "interrupted");
+  test_cases::expect_same_run(a, root / "straight", b, root / "interrupted");
   fs::remove_all(root);
 }
 
@@ -123,6 +106,6 @@ TEST(Resume, FinishedRunExtendsToALaterStrain) {
   ASSERT_TRUE(run_case(small_case(), first).contains("result"));
   first.resume = true;
   const nlohmann::json b = run_case(longer, first);
-  expect_same_run(a, root / "straight", b, root / "extended");
+  test_cases::expect_same_run(a, root / "straight", b, root / "extended");
   fs::remove_all(root);
 }

@@ -6,25 +6,13 @@
 #include <omp.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "solver/simulation/case_runner.hpp"
 #include "solver/simulation/simulation_case.hpp"
 #include "tests/simulation/interrupted_run.hpp"
+#include "tests/simulation/same_run.hpp"
 
 using namespace rbcal::solver;
-
-namespace {
-
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
 
 TEST(Determinism, ADenseCoupledRunDoesNotDependOnTheThreadCount) {
   namespace fs = std::filesystem;
@@ -45,8 +33,6 @@ TEST(Determinism, ADenseCoupledRunDoesNotDependOnTheThreadCount) {
   const nlohmann::json two = test_cases::straight_run(c, root / "two");
   omp_set_num_threads(threads);
   EXPECT_GE(one["result"]["steps"].get<std::int64_t>(), 40);
-  EXPECT_EQ(one["result"]["eta_re"].get<double>(), two["result"]["eta_re"].get<double>());
-  EXPECT_EQ(one["result"]["eta_re_wall"].get<double>(), two["result"]["eta_re_wall"].get<double>());
-  EXPECT_EQ(slurp(root / "one" / "series.csv"), slurp(root / "two" / "series.csv"));
+  test_cases::expect_same_run(one, root / "one", two, root / "two");
   fs::remove_all(root);
 }
