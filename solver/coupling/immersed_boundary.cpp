@@ -71,26 +71,30 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     return lattice_index(x, y, z, ny, nz);
   };
   const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
-  // The keys and the (cell, node) pairs in mesh order, then the sort, which is serial;
-  // the copies and stencils after it run in parallel (the serial version, which also
-  // copied positions and forces into place, was a third of a step's waiting).
+  // The keys in mesh order, then the sort, which is serial; the copies and stencils after
+  // it run in parallel (the serial version, which also copied positions and forces into
+  // place, was a third of a step's waiting). The (cell, node) pair of each place in mesh
+  // order depends only on the cells' sizes: rebuilt when they change.
   auto& first = order.cell_first;
-  first.resize(positions.size() + 1);
-  first[0] = 0;
-  for (std::size_t c = 0; c < positions.size(); ++c) first[c + 1] = first[c] + positions[c].size();
+  bool same_cells = first.size() == positions.size() + 1;
+  for (std::size_t c = 0; same_cells && c < positions.size(); ++c)
+    same_cells = first[c + 1] - first[c] == positions[c].size();
+  if (!same_cells) {
+    first.assign(positions.size() + 1, 0);
+    for (std::size_t c = 0; c < positions.size(); ++c) first[c + 1] = first[c] + positions[c].size();
+    order.mesh_order.resize(first.back());
+    for (std::size_t c = 0; c < positions.size(); ++c)
+      for (std::size_t n = 0; n < positions[c].size(); ++n)
+        order.mesh_order[first[c] + n] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
+  }
   const std::size_t total = first.back();
   auto& key = order.key;
   key.resize(total);
-  order.mesh_order.resize(total);
   const long cells = static_cast<long>(positions.size());
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < cells; ++c) {
     std::uint32_t* k = key.data() + first[c];
-    auto* pair = order.mesh_order.data() + first[c];
-    for (std::size_t n = 0; n < positions[c].size(); ++n) {
-      k[n] = static_cast<std::uint32_t>(key_of(positions[c][n]));
-      pair[n] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(n)};
-    }
+    for (const Vec3& p : positions[c]) *k++ = static_cast<std::uint32_t>(key_of(p));
   }
   const std::vector<std::uint64_t>& sorted = order.sort(key, keys);
   const int slabs = NodeOrder::slab_count(nx);

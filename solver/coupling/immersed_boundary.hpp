@@ -40,7 +40,7 @@ struct NodeOrder {
   std::vector<KernelStencil> stencil;
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   // Scratch: each node's key and (cell, node) in mesh order, the sort, the first node of
-  // each cell in mesh order.
+  // each cell in mesh order (the pairs and the firsts kept while the cells' sizes stay).
   std::vector<std::uint32_t> key;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> mesh_order;
   StableKeySort sort;
