@@ -35,17 +35,15 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
     double* const f0 = f[0];
     double* const f1 = f[1];
     double* const f2 = f[2];
-    for (int a = 0; a < 4; ++a) {
-      const std::size_t column = static_cast<std::size_t>(s.x[a]) * ny;
+    for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         const double wab = s.wx[a] * s.wy[b];
         if (wab == 0.0) continue;
-        const std::size_t at = (column + s.y[b]) * nz + s.z[0];
+        const std::size_t at = lattice_index(s.x[a], s.y[b], s.z[0], ny, nz);
         store4(f0 + at, load4(f0 + at) + wab * fz0);
         store4(f1 + at, load4(f1 + at) + wab * fz1);
         store4(f2 + at, load4(f2 + at) + wab * fz2);
       }
-    }
     return;
   }
   for_each_stencil_node(s, ny, nz, [&](std::size_t node, double w) {
