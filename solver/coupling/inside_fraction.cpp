@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "solver/coupling/kernel_stencil.hpp"
+
 namespace rbcal::solver {
 
 namespace {
@@ -13,11 +15,6 @@ namespace {
 // Offsets of the scan lines from the lattice columns (irrational, far below dx).
 constexpr double kLineOffsetX = 1.0e-7 * 3.14159265358979;
 constexpr double kLineOffsetY = 1.0e-7 * 2.71828182845905;
-
-int wrap(int i, int n) { return ((i % n) + n) % n; }
-
-// floor(i / n) for n > 0.
-int floor_div(int i, int n) { return i >= 0 ? i / n : -((-i + n - 1) / n); }
 
 // Lattice columns (x) per chunk of the parallel apply.
 constexpr int kColumnsPerChunk = 2;
@@ -168,7 +165,7 @@ void InsideFraction::apply(const Crossings& c, int column_lo, int column_hi, std
           const double z0 = c.hits[m].z, z1 = c.hits[m + 1].z;
           const int k0 = static_cast<int>(std::floor(z0 + 0.5)), k1 = static_cast<int>(std::floor(z1 + 0.5));
           // k wrapped into the box once per interval, then stepped.
-          for (int k = k0, kz = wrap(k0, nz_); k <= k1; ++k, kz = kz + 1 < nz_ ? kz + 1 : 0) {
+          for (int k = k0, kz = wrap_index(k0, nz_); k <= k1; ++k, kz = kz + 1 < nz_ ? kz + 1 : 0) {
             const double overlap = std::min(z1, k + 0.5) - std::max(z0, k - 0.5);
             if (overlap <= 0.0) continue;
             const std::size_t node = column + kz;

@@ -26,6 +26,9 @@ static_assert(sizeof(KernelStencil) == 128);
 // i wrapped into [0, n) (periodic directions; any i).
 RBCAL_HD inline int wrap_index(int i, int n) { return ((i % n) + n) % n; }
 
+// floor(i / n) for n > 0 and any i (integer division rounds toward zero).
+RBCAL_HD inline int floor_div(int i, int n) { return i >= 0 ? i / n : -((-i + n - 1) / n); }
+
 // FluidLattice::index for a lattice of ny x nz rows (x-major, z fastest).
 RBCAL_HD inline std::size_t lattice_index(int x, int y, int z, int ny, int nz) {
   return (static_cast<std::size_t>(x) * ny + y) * nz + z;

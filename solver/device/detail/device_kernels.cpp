@@ -28,8 +28,6 @@ RBCAL_HD inline void for_each_direction(F&& f) {
 
 RBCAL_HD inline int wrap_once(int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
 
-RBCAL_HD inline int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
 // Velocity at a stencil from a node field (components `stride` apart), divided by steps.
 RBCAL_HD inline void interpolate_at(const KernelStencil& s, const double* u, std::size_t stride, int ny, int nz,
                                     double steps, double* out) {
