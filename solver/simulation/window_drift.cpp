@@ -8,7 +8,9 @@ namespace rbcal::solver {
 WindowDrift window_drift(const std::vector<double>& series, double relative_sem) {
   WindowDrift d;
   const std::size_t half = series.size() / 2;
-  if (half < 16) return d;  // the blocking keeps at least 8 blocks: two levels at least
+  // Below 32 samples the window's blocking error (which keeps 8 blocks at least) reaches
+  // blocks of two samples only: too short a correlation to trust for the drift's sd.
+  if (half < 16) return d;
   const double early = std::accumulate(series.begin(), series.begin() + half, 0.0) / half;
   const double late = std::accumulate(series.end() - half, series.end(), 0.0) / half;
   if (early <= 0.0 || late <= 0.0) return d;
