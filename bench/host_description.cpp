@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "solver/simd.hpp"
 
@@ -10,15 +12,23 @@ namespace rbcal::bench {
 
 namespace {
 
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
+// "key : value" fields of the first block of /proc/cpuinfo (the first processor).
+std::map<std::string, std::string> first_processor(std::istream& in) {
+  std::map<std::string, std::string> fields;
   std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t") == std::string::npos) {
+      if (!fields.empty()) break;  // the blank line after the first processor
+      continue;
     }
-  return "unknown";
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::string key = line.substr(0, colon);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    const auto value_at = line.find_first_not_of(" \t", colon + 1);
+    fields.emplace(key, value_at == std::string::npos ? "" : line.substr(value_at));
+  }
+  return fields;
 }
 
 // The bracketed word of "always [madvise] never".
@@ -33,13 +43,47 @@ std::string huge_page_mode() {
 
 }  // namespace
 
+std::string cpu_model_of(std::istream& cpuinfo) {
+  const auto fields = first_processor(cpuinfo);
+  const auto model = fields.find("model name");
+  return model == fields.end() || model->second.empty() ? "unknown" : model->second;
+}
+
+std::string cpu_signature_of(std::istream& cpuinfo) {
+  const auto fields = first_processor(cpuinfo);
+  const auto vendor = fields.find("vendor_id"), family = fields.find("cpu family"), model = fields.find("model");
+  if (vendor == fields.end() || family == fields.end() || model == fields.end()) return "unknown";
+  return vendor->second + " family " + family->second + " model " + model->second;
+}
+
+MemoryUse memory_use_of(std::istream& smaps_rollup) {
+  MemoryUse use;
+  std::string line;
+  while (std::getline(smaps_rollup, line)) {
+    std::istringstream fields(line);
+    std::string key;
+    double kib = 0.0;
+    if (!(fields >> key >> kib)) continue;
+    if (key == "Anonymous:") use.anonymous_bytes = kib * 1024.0;
+    if (key == "AnonHugePages:") use.huge_page_bytes = kib * 1024.0;
+  }
+  return use;
+}
+
+MemoryUse memory_use() {
+  std::ifstream in("/proc/self/smaps_rollup");
+  return memory_use_of(in);
+}
+
 HostDescription describe_host() {
-  return {cpu_model(), solver::simd::width, huge_page_mode(), sysconf(_SC_PAGESIZE)};
+  std::ifstream model("/proc/cpuinfo"), signature("/proc/cpuinfo");
+  return {cpu_model_of(model), cpu_signature_of(signature), solver::simd::width, huge_page_mode(),
+          sysconf(_SC_PAGESIZE)};
 }
 
 std::string HostDescription::line() const {
-  return cpu_model + ", " + std::to_string(vector_doubles) + " doubles per vector, THP " + huge_pages + ", " +
-         std::to_string(page_bytes / 1024) + " KiB pages";
+  return cpu_model + " (" + cpu_signature + "), " + std::to_string(vector_doubles) + " doubles per vector, THP " +
+         huge_pages + ", " + std::to_string(page_bytes / 1024) + " KiB pages";
 }
 
 }  // namespace rbcal::bench

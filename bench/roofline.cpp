@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include "bench/host_description.hpp"
 #include "bench/lattice_throughput.hpp"
 #include "bench/detail/stream_triad.hpp"
 #include "bench/detail/timing.hpp"
@@ -27,6 +28,9 @@ RooflineResult measure_roofline(const RooflineSettings& settings) {
     ratio.push_back(lattice_bytes / r.triad_bytes_per_s.back());
     ratio_streaming.push_back(lattice_bytes / r.triad_streaming_bytes_per_s.back());
   }
+  const MemoryUse use = memory_use();
+  r.anonymous_bytes = use.anonymous_bytes;
+  r.huge_page_bytes = use.huge_page_bytes;
   r.median_triad = median(r.triad_bytes_per_s);
   r.median_triad_streaming = median(r.triad_streaming_bytes_per_s);
   r.median_updates = median(r.lattice_updates_per_s);

@@ -24,6 +24,9 @@ struct RooflineResult {
   double median_triad = 0, median_triad_streaming = 0, median_updates = 0;
   double fraction_of_triad = 0;            // median of per-round ratios
   double fraction_of_streaming_triad = 0;  // likewise, against the streaming-store triad
+  // The process's anonymous memory and its part in huge pages while the arrays were held
+  // (host_description.hpp: memory_use).
+  double anonymous_bytes = 0, huge_page_bytes = 0;
 };
 
 RooflineResult measure_roofline(const RooflineSettings& settings);

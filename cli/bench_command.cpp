@@ -133,6 +133,9 @@ void run_bench(const BenchOptions& o) {
     std::printf("  warning: the triad arrays are not much larger than the %.0f MiB last-level cache;\n"
                 "           the roofline is the cache's, not memory's (raise --triad-mib)\n",
                 l3 / 1048576.0);
+  std::printf("  huge pages         %.2f of %.2f GiB of the process's anonymous memory (%.0f %%)\n",
+              r.huge_page_bytes / 1073741824.0, r.anonymous_bytes / 1073741824.0,
+              r.anonymous_bytes > 0 ? 100.0 * r.huge_page_bytes / r.anonymous_bytes : 0.0);
   std::printf("  roofline fraction  %.1f %% of STREAM triad (target >= 60 %%), %.1f %% of the streaming-store triad\n",
               100.0 * r.fraction_of_triad, 100.0 * r.fraction_of_streaming_triad);
 
@@ -150,6 +153,9 @@ void run_bench(const BenchOptions& o) {
     j["precision"] = o.precision;
     const bench::HostDescription host = bench::describe_host();
     j["cpu_model"] = host.cpu_model;
+    j["cpu_signature"] = host.cpu_signature;
+    j["anonymous_bytes"] = r.anonymous_bytes;
+    j["huge_page_bytes"] = r.huge_page_bytes;
     j["vector_doubles"] = host.vector_doubles;
     j["transparent_huge_pages"] = host.huge_pages;
     j["page_bytes"] = host.page_bytes;
