@@ -41,18 +41,23 @@ def mean(values):
     return sum(values) / len(values)
 
 
-# 1. Seeds in the 16a gap: each pair's ln ratio; one run's sd is |ln ratio| / sqrt(2).
-pairs = []
+# 1. Seeds in the 16a gap: each pair's ln ratio; one run's sd is |ln ratio| / sqrt(2). Points
+# with further seeds (_seed3, ...) enter the pooled sd with all their seeds.
+pairs, squares, dof = [], 0.0, 0
 for seed in sorted(glob.glob(f"{ANCHORS}/*_seed2.result.json")):
     first = seed.replace("_seed2", "")
     if os.path.exists(first):
         (a, _), (b, _) = eta(first), eta(seed)
         pairs.append((os.path.basename(first).split(".result")[0], math.log(b / a)))
+        logs = [math.log(eta(f)[0]) for f in [first] + sorted(glob.glob(first.replace(".result.json", "_seed*.result.json")))]
+        squares += sum((x - mean(logs)) ** 2 for x in logs)
+        dof += len(logs) - 1
 print("## 1. Seeds of one point in the 16a gap")
 for name, d in pairs:
     print(f"  {name}: ln(seed 2 / seed 1) {d:+.4f}")
-noise = rms([d for _, d in pairs]) / math.sqrt(2.0)
-print(f"  one run's noise (RMS of the differences / sqrt 2): {noise:.4f} over {len(pairs)} pairs")
+noise = math.sqrt(squares / dof)
+print(f"  one run's noise (RMS of the differences / sqrt 2): {rms([d for _, d in pairs]) / math.sqrt(2.0):.4f} over"
+      f" {len(pairs)} pairs; over all seeds of those points ({dof} degrees of freedom): {noise:.4f}")
 sems = [r["eta_re_sem"] / r["eta_re"] for r in
         (json.load(open(f))["result"] for f in glob.glob(f"{ANCHORS}/n*_lambda5.result.json"))]
 noise_halves = 2.0 * rms(sems)

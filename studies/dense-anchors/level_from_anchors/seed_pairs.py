@@ -6,11 +6,14 @@ written before it ran (blind_predictions_n12_seed2.csv, from seed_predictions.py
   - d = ln(seed 2 / seed 1), and z_noise = d / sd, sd from both runs' sems and a seed noise
     of 0.018 per run (|z_noise| > 2 says the seeds differ by more than that noise);
   - z_model: seed 2 against the model's prediction and sd at the point.
-Then the seed noise the pairs measure: rms(d) / sqrt(2), and the same less the runs' sems.
+Then the seed noise the pairs measure: rms(d) / sqrt(2), and the same less the runs' sems;
+and, where a point has further seeds (_seed3, ...), the noise pooled over every point's seeds
+(the sample variance of ln eta_re per point, weighted by its degrees of freedom).
   python3 studies/dense-anchors/level_from_anchors/seed_pairs.py \
       studies/dense-anchors/blind_predictions_n12_seed2.csv
 """
 import csv
+import glob
 import json
 import math
 import os
@@ -54,6 +57,36 @@ def main():
         beyond = max(ms - sum(sem_sq) / len(sem_sq), 0.0)
         print(f"# {len(d_all)} pairs: seed noise per run rms(d)/sqrt(2) = {math.sqrt(ms / 2):.4f}; "
               f"less the runs' sems {math.sqrt(beyond / 2):.4f} (in ln eta_re)")
+    pooled(lines)
+
+
+def seeds_of(base):
+    """The results of a point's first seed and of its _seedN runs."""
+    names = [base] + [os.path.basename(f)[: -len(".result.json")]
+                      for f in sorted(glob.glob(os.path.join(RESULTS, base + "_seed*.result.json")))]
+    return [r for r in map(result, names) if r is not None]
+
+
+def pooled(lines):
+    """The seed noise pooled over all seeds of each point that has a second one."""
+    squares, dof, sems = 0.0, 0, 0.0
+    for row in csv.DictReader(lines):
+        base = row["case"][: -len("_seed2")]
+        runs = seeds_of(base)
+        if len(runs) < 2:
+            continue
+        logs = [math.log(e) for e, _ in runs]
+        mean = sum(logs) / len(logs)
+        if len(runs) > 2:
+            var = sum((x - mean) ** 2 for x in logs) / (len(logs) - 1)
+            print(f"# {base}: {len(runs)} seeds " + ", ".join(f"{e:.4f}" for e, _ in runs) +
+                  f"; geometric mean {math.exp(mean):.4f}, sd of ln {math.sqrt(var):.4f}")
+        squares += sum((x - mean) ** 2 for x in logs)
+        dof += len(logs) - 1
+        sems += sum((s / e) ** 2 for e, s in runs) * (len(logs) - 1) / len(logs)
+    if dof:
+        print(f"# all seeds, {dof} degrees of freedom: seed noise per run {math.sqrt(squares / dof):.4f}; "
+              f"less the runs' sems {math.sqrt(max(squares - sems, 0.0) / dof):.4f} (in ln eta_re)")
 
 
 if __name__ == "__main__":
