@@ -7,9 +7,10 @@
 
 namespace rbcal::bench {
 
-LatticeThroughput::LatticeThroughput(std::array<int, 3> box, bool single_precision) {
+LatticeThroughput::LatticeThroughput(std::array<int, 3> box, bool single_precision, int prefetch_distance) {
   solver::FluidConfig cfg;
   cfg.single_precision = single_precision;
+  if (prefetch_distance >= 0) cfg.prefetch_distance = prefetch_distance;
   cfg.nx = box[0];
   cfg.ny = box[1];
   cfg.nz = box[2];

@@ -12,8 +12,9 @@ namespace rbcal::bench {
 
 class LatticeThroughput {
  public:
-  // single_precision: populations stored in 32 bits (FluidConfig::single_precision).
-  explicit LatticeThroughput(std::array<int, 3> box, bool single_precision = false);
+  // single_precision: populations stored in 32 bits (FluidConfig::single_precision);
+  // prefetch_distance: FluidConfig::prefetch_distance (negative: its default).
+  explicit LatticeThroughput(std::array<int, 3> box, bool single_precision = false, int prefetch_distance = -1);
   ~LatticeThroughput();
 
   // Seconds for `steps` time steps.

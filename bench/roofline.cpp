@@ -11,7 +11,7 @@ namespace rbcal::bench {
 
 RooflineResult measure_roofline(const RooflineSettings& settings) {
   StreamTriad triad(settings.triad_elements);
-  LatticeThroughput lattice(settings.box, settings.single_precision);
+  LatticeThroughput lattice(settings.box, settings.single_precision, settings.prefetch_distance);
   triad.run_once(false);  // warm-up
   triad.run_once(true);
 

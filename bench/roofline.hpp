@@ -13,6 +13,7 @@ struct RooflineSettings {
   int steps = 5;                             // lattice steps per round
   int rounds = 7;
   bool single_precision = false;  // populations stored in 32 bits
+  int prefetch_distance = -1;        // FluidConfig::prefetch_distance (negative: its default)
   std::size_t triad_elements = std::size_t{128} << 20;  // 1 GiB per array
 };
 

@@ -21,6 +21,7 @@
 #include "formats/json_file.hpp"
 #include "formats/provenance.hpp"
 #include "rbcal/build_info.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 #include "solver/simulation/simulation_case.hpp"
 #include "surrogate/offset_family_file.hpp"
 #include "cli/data_folder.hpp"
@@ -40,6 +41,7 @@ struct BenchOptions {
   int case_steps = 20;
   std::string backend = "cpu";
   std::string precision = "double";
+  int prefetch = solver::FluidConfig{}.prefetch_distance;  // fluid mode: populations ahead
   std::vector<int> calibration_points;  // calibration mode: sample sizes
   std::string surrogate;                // its model (default: the shipped one)
   bool no_mcmc = false;
@@ -112,6 +114,7 @@ void run_bench(const BenchOptions& o) {
   settings.steps = o.steps;
   settings.rounds = o.rounds;
   settings.single_precision = o.precision == "float";
+  settings.prefetch_distance = o.prefetch;
   settings.triad_elements = static_cast<std::size_t>(o.triad_mib * 1024.0 * 1024.0 / 8.0);
   const bench::RooflineResult r = bench::measure_roofline(settings);
   const double bytes_per_update = settings.single_precision ? bench::LatticeThroughput::bytes_per_update_single
@@ -126,6 +129,8 @@ void run_bench(const BenchOptions& o) {
   std::printf("  STREAM triad, streaming stores  %8.2f GB/s\n", r.median_triad_streaming * 1e-9);
   std::printf("  lattice update                  %8.2f MLUPS %d x %d x %d, D3Q19 TRT, variable viscosity, Guo force, %s populations\n",
               r.median_updates * 1e-6, o.box[0], o.box[1], o.box[2], o.precision.c_str());
+  std::printf("                                            prefetch %d populations ahead%s\n", o.prefetch,
+              o.prefetch == 0 ? " (none)" : "");
   std::printf("                                  %8.2f GB/s  at %.0f B/update\n",
               r.median_updates * bytes_per_update * 1e-9, bytes_per_update);
   const long l3 = sysconf(_SC_LEVEL3_CACHE_SIZE);
@@ -151,6 +156,7 @@ void run_bench(const BenchOptions& o) {
     j["lattice_updates_per_s"] = r.lattice_updates_per_s;
     j["bytes_per_update"] = bytes_per_update;
     j["precision"] = o.precision;
+    j["prefetch_distance"] = o.prefetch;
     const bench::HostDescription host = bench::describe_host();
     j["cpu_model"] = host.cpu_model;
     j["cpu_signature"] = host.cpu_signature;
@@ -200,6 +206,11 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--precision", opts->precision,
                   "Population storage of the lattice update: double, or float (32 bits, shifted; numerics.precision)")
       ->check(CLI::IsMember({"double", "float"}))
+      ->capture_default_str();
+  cmd->add_option("--prefetch", opts->prefetch,
+                  "Fluid mode: how far ahead every read stream of the update is prefetched, in populations "
+                  "(0: none); to find a host's best distance (the results do not depend on it)")
+      ->check(CLI::IsMember(std::vector<int>(solver::kPrefetchDistances.begin(), solver::kPrefetchDistances.end())))
       ->capture_default_str();
   cmd->callback([opts] {
     if (opts->backend == "device" && opts->case_path.empty())

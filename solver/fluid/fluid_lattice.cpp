@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "solver/fluid/d3q19.hpp"
@@ -15,12 +16,6 @@ namespace rbcal::solver {
 using namespace d3q19;
 
 namespace {
-
-// Every stream the update reads is prefetched this many doubles (eight cache lines) ahead.
-// With 23 read streams per row the hardware prefetchers fall behind: on the Xeon build
-// machine this lifts the update from 87 to 128 MLUPS on 256 x 160 x 256, 2 threads
-// (docs/performance.md, "Software prefetch"). 32 and 64 tie, 96 and more are slower.
-constexpr int prefetch_ahead = 64;
 
 // Floats in a 64-byte cache line (the rows of float storage are whole lines).
 constexpr int kFloatsPerLine = 16;
@@ -51,6 +46,12 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.nx >= 1 && config.ny >= 1 && config.nz >= 1, "lattice dimensions must be >= 1");
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
+  if (std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), config.prefetch_distance) ==
+      kPrefetchDistances.end()) {
+    std::string known;
+    for (const int d : kPrefetchDistances) known += (known.empty() ? "" : ", ") + std::to_string(d);
+    require(false, "prefetch distance " + std::to_string(config.prefetch_distance) + " is not one of " + known);
+  }
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
   component_stride_ = component_stride(nodes_);
   row_length_ = whole_vectors(static_cast<std::size_t>(config.nz));
@@ -98,13 +99,16 @@ void FluidLattice::set_equilibrium(std::size_t node, double rho, double ux, doub
 
 double FluidLattice::rest(int q) { return w[q]; }
 
-template <class T>
+template <int Ahead, class T>
 void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const velocity_out[3], bool accumulate) {
   using simd::vdouble;
   // Float storage holds f_q - w_q: the shift is added on loading, taken off on storing.
   constexpr bool shifted = std::is_same_v<T, float>;
-  // The same bytes ahead as for doubles.
-  constexpr int ahead = prefetch_ahead;
+  // Every stream the update reads is prefetched ahead (FluidConfig::prefetch_distance): with
+  // 23 read streams per row the hardware prefetchers fall behind. 64 populations ahead lift
+  // the update 1.4-1.5 times on both Intel Xeon hosts measured (docs/performance.md,
+  // "Software prefetch"). The per-node fields are prefetched as many doubles ahead.
+  constexpr int ahead = Ahead;
   constexpr int W = simd::width;
   const int nx = config_.nx, ny = config_.ny, nz = config_.nz;
   const bool walls = config_.y_boundary == WallNormalBoundary::MovingWalls;
@@ -173,9 +177,10 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
       } else {
         f[q] = simd::load(in[q] + z0) + add[q];
       }
-      prefetch(in[q] + z0 + ahead);
+      if constexpr (ahead > 0) prefetch(in[q] + z0 + ahead);
     }
-    for (const double* p : {nu, fx, fy, fz}) prefetch(p + z0 + prefetch_ahead);
+    if constexpr (ahead > 0)
+      for (const double* p : {nu, fx, fy, fz}) prefetch(p + z0 + ahead);
     nu_v = simd::load(nu + z0);
     fx_v = simd::load(fx + z0);
     fy_v = simd::load(fy + z0);
@@ -215,8 +220,23 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
   }
 }
 
+template <class T>
+FluidLattice::RowUpdate<T> FluidLattice::row_update() const {
+  // The instantiation whose distance is the configured one (the constructor checked that
+  // there is one).
+  RowUpdate<T> update = nullptr;
+  [&]<std::size_t... i>(std::index_sequence<i...>) {
+    ((config_.prefetch_distance == kPrefetchDistances[i] &&
+      (update = &FluidLattice::update_row<kPrefetchDistances[i], T>)),
+     ...);
+  }(std::make_index_sequence<kPrefetchDistances.size()>{});
+  return update;
+}
+
 void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
   const int nx = config_.nx, ny = config_.ny;
+  const RowUpdate<double> update_double = row_update<double>();
+  const RowUpdate<float> update_float = row_update<float>();
   // Below a few thousand nodes a thread team costs more than it saves.
   const bool threaded = nodes_ >= 4096;
 #pragma omp parallel if (threaded)
@@ -224,8 +244,8 @@ void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
 #pragma omp for collapse(2) schedule(static) nowait
     for (int x = 0; x < nx; ++x)
       for (int y = 0; y < ny; ++y) {
-        if (config_.single_precision) update_row(h_.data(), h_next_.data(), x, y, velocity_out, accumulate);
-        else update_row(f_.data(), f_next_.data(), x, y, velocity_out, accumulate);
+        if (config_.single_precision) (this->*update_float)(h_.data(), h_next_.data(), x, y, velocity_out, accumulate);
+        else (this->*update_double)(f_.data(), f_next_.data(), x, y, velocity_out, accumulate);
       }
     simd::store_fence();  // streaming stores visible before the barrier
   }

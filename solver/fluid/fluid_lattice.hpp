@@ -38,7 +38,17 @@ struct FluidConfig {
   // the scheme FluidX3D published (Lehmann et al., Comput. Phys. Commun. 2022). Halves the
   // update's memory traffic.
   bool single_precision = false;
+  // How far ahead of the chunk being loaded every read stream is prefetched, in populations
+  // (elements of the storage type: 64 are 512 bytes of doubles, 256 of floats; 0: no
+  // software prefetch); one of kPrefetchDistances. A property of the host, not of the
+  // results (they are the same at any distance): `rbcal bench --prefetch` measures a host's
+  // best.
+  int prefetch_distance = 64;
 };
+
+// The prefetch distances the update is compiled for (a compile-time constant in its loop:
+// read from the configuration inside it, the update ran 1-3 % slower).
+inline constexpr std::array<int, 8> kPrefetchDistances = {0, 8, 16, 32, 64, 96, 128, 256};
 
 // Density and the velocity that entered the last collision, u = (sum f* c - F/2) / rho.
 struct NodeMoments {
@@ -106,8 +116,13 @@ class FluidLattice {
  private:
   // Pull-stream and collide the nodes (x, y, 0..nz-1) from cur into next (T: the storage,
   // double or float).
-  template <class T>
+  template <int Ahead, class T>
   void update_row(const T* cur, T* next, int x, int y, double* const velocity_out[3], bool accumulate);
+  template <class T>
+  using RowUpdate = void (FluidLattice::*)(const T*, T*, int, int, double* const[3], bool);
+  // update_row at config_.prefetch_distance.
+  template <class T>
+  RowUpdate<T> row_update() const;
   // Population q at index i of a padded population array, unshifted; and its store.
   double stored(int q, std::size_t i) const {
     return config_.single_precision ? static_cast<double>(h_[q * stride_ + i]) + rest(q) : f_[q * stride_ + i];
