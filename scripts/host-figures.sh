@@ -7,7 +7,7 @@
 #
 #   bash scripts/host-figures.sh [RBCAL] [OUT]     (defaults: build/bin/rbcal of this checkout, ./host-figures)
 #
-# About 15 minutes on a 2-core host. Every bench run's JSON stays in OUT. HOST_FIGURES_QUICK=1
+# About 2.5 minutes on a 2-core host. Every bench run's JSON stays in OUT. HOST_FIGURES_QUICK=1
 # runs the same set on a tiny lattice in seconds (a check of the script, not figures).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
