@@ -1,6 +1,7 @@
 // The bench header's host fields, parsed from /proc text as Linux writes it: the first
-// processor's block of /proc/cpuinfo (here an Intel Xeon guest under KVM and an AMD EPYC
-// guest, as their kernels printed them) and /proc/self/smaps_rollup.
+// processor's block of /proc/cpuinfo (an Intel Xeon guest under KVM as its kernel printed
+// it, and the same fields as an AMD Zen 4 guest gives them: vendor AuthenticAMD, family 25)
+// and /proc/self/smaps_rollup.
 #include <gtest/gtest.h>
 
 #include <sstream>
