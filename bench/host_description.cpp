@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "solver/simd.hpp"
 
@@ -43,17 +44,15 @@ std::string huge_page_mode() {
 
 }  // namespace
 
-std::string cpu_model_of(std::istream& cpuinfo) {
+CpuIdentity cpu_identity_of(std::istream& cpuinfo) {
   const auto fields = first_processor(cpuinfo);
-  const auto model = fields.find("model name");
-  return model == fields.end() || model->second.empty() ? "unknown" : model->second;
-}
-
-std::string cpu_signature_of(std::istream& cpuinfo) {
-  const auto fields = first_processor(cpuinfo);
+  CpuIdentity id{"unknown", "unknown"};
+  const auto name = fields.find("model name");
+  if (name != fields.end() && !name->second.empty()) id.model = name->second;
   const auto vendor = fields.find("vendor_id"), family = fields.find("cpu family"), model = fields.find("model");
-  if (vendor == fields.end() || family == fields.end() || model == fields.end()) return "unknown";
-  return vendor->second + " family " + family->second + " model " + model->second;
+  if (vendor != fields.end() && family != fields.end() && model != fields.end())
+    id.signature = vendor->second + " family " + family->second + " model " + model->second;
+  return id;
 }
 
 MemoryUse memory_use_of(std::istream& smaps_rollup) {
@@ -76,8 +75,9 @@ MemoryUse memory_use() {
 }
 
 HostDescription describe_host() {
-  std::ifstream model("/proc/cpuinfo"), signature("/proc/cpuinfo");
-  return {cpu_model_of(model), cpu_signature_of(signature), solver::simd::width, huge_page_mode(),
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  CpuIdentity cpu = cpu_identity_of(cpuinfo);
+  return {std::move(cpu.model), std::move(cpu.signature), solver::simd::width, huge_page_mode(),
           sysconf(_SC_PAGESIZE)};
 }
 

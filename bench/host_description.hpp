@@ -21,9 +21,12 @@ struct HostDescription {
 
 HostDescription describe_host();
 
-// The first processor's "model name", and its vendor, family and model, from /proc/cpuinfo text.
-std::string cpu_model_of(std::istream& cpuinfo);
-std::string cpu_signature_of(std::istream& cpuinfo);
+// The first processor's "model name", and its vendor, family and model ("GenuineIntel family
+// 6 model 143"), from /proc/cpuinfo text ("unknown" where absent).
+struct CpuIdentity {
+  std::string model, signature;
+};
+CpuIdentity cpu_identity_of(std::istream& cpuinfo);
 
 // This process's anonymous memory and the part of it in transparent huge pages, from
 // /proc/self/smaps_rollup text (zeros where the fields are absent). Whether the large arrays

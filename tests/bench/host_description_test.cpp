@@ -33,17 +33,17 @@ const char* kAmdGuest =
     "model name\t: AMD EPYC 9B14\n";
 
 TEST(HostDescription, NamesTheFirstProcessorsModelAndSignature) {
-  std::istringstream intel_model(kIntelGuest), intel_signature(kIntelGuest);
-  EXPECT_EQ(cpu_model_of(intel_model), "Intel(R) Xeon(R) Processor");
-  EXPECT_EQ(cpu_signature_of(intel_signature), "GenuineIntel family 6 model 167");
-  std::istringstream amd(kAmdGuest);
-  EXPECT_EQ(cpu_signature_of(amd), "AuthenticAMD family 25 model 17");
+  std::istringstream intel_text(kIntelGuest), amd_text(kAmdGuest);
+  const CpuIdentity intel = cpu_identity_of(intel_text), amd = cpu_identity_of(amd_text);
+  EXPECT_EQ(intel.model, "Intel(R) Xeon(R) Processor");
+  EXPECT_EQ(intel.signature, "GenuineIntel family 6 model 167");
+  EXPECT_EQ(amd.signature, "AuthenticAMD family 25 model 17");
 }
 
 TEST(HostDescription, SaysUnknownWhereTheFieldsAreMissing) {
   std::istringstream empty(""), partial("processor\t: 0\nvendor_id\t: GenuineIntel\n");
-  EXPECT_EQ(cpu_model_of(empty), "unknown");
-  EXPECT_EQ(cpu_signature_of(partial), "unknown");
+  EXPECT_EQ(cpu_identity_of(empty).model, "unknown");
+  EXPECT_EQ(cpu_identity_of(partial).signature, "unknown");
 }
 
 TEST(HostDescription, ReadsAnonymousAndHugePageMemory) {
