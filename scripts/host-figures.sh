@@ -61,6 +61,10 @@ out = sys.argv[1]
 def runs(pattern):
     return [json.load(open(f)) for f in sorted(glob.glob(os.path.join(out, pattern + ".json")))]
 
+def median_mlups(run):
+    rounds = sorted(run["lattice_updates_per_s"])
+    return 1e-6 * rounds[len(rounds) // 2]
+
 def span(values, fmt):
     low, high = fmt.format(min(values)), fmt.format(max(values))
     return low if low == high else f"{low}-{high}"
@@ -71,7 +75,7 @@ print(f"host: {first['cpu_model']} ({first['cpu_signature']}), {first['vector_do
 for threads in (2, 1):
     for precision in ("double", "float"):
         r = runs(f"fluid_t{threads}_{precision}_*")
-        mlups = [1e-6 * x for j in r for x in [sorted(j["lattice_updates_per_s"])[len(j["lattice_updates_per_s"]) // 2]]]
+        mlups = [median_mlups(j) for j in r]
         frac = [100 * j["roofline_fraction_streaming_triad"] for j in r]
         huge = [100 * j["huge_page_bytes"] / j["anonymous_bytes"] for j in r if j["anonymous_bytes"] > 0]
         print(f"fluid update, {threads} thread(s), {precision}: {span(mlups, '{:.1f}')} MLUPS, "
@@ -79,8 +83,7 @@ for threads in (2, 1):
               + (f", {span(huge, '{:.0f}')} % of memory in huge pages" if huge else ""))
 scan = []
 for distance in (0, 16, 32, 64, 128):
-    r = runs(f"prefetch_{distance}_*")
-    mlups = [1e-6 * sorted(j["lattice_updates_per_s"])[len(j["lattice_updates_per_s"]) // 2] for j in r]
+    mlups = [median_mlups(j) for j in runs(f"prefetch_{distance}_*")]
     scan.append(f"{distance}: {span(mlups, '{:.1f}')}")
 print("prefetch scan, 2 threads, MLUPS: " + "; ".join(scan))
 for threads in (2, 1):

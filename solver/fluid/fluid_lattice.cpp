@@ -46,12 +46,11 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.nx >= 1 && config.ny >= 1 && config.nz >= 1, "lattice dimensions must be >= 1");
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
-  if (std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), config.prefetch_distance) ==
-      kPrefetchDistances.end()) {
-    std::string known;
-    for (const int d : kPrefetchDistances) known += (known.empty() ? "" : ", ") + std::to_string(d);
-    require(false, "prefetch distance " + std::to_string(config.prefetch_distance) + " is not one of " + known);
-  }
+  std::string compiled;
+  for (const int d : kPrefetchDistances) compiled += (compiled.empty() ? "" : ", ") + std::to_string(d);
+  require(std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), config.prefetch_distance) !=
+              kPrefetchDistances.end(),
+          "prefetch distance " + std::to_string(config.prefetch_distance) + " is not one of " + compiled);
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
   component_stride_ = component_stride(nodes_);
   row_length_ = whole_vectors(static_cast<std::size_t>(config.nz));
