@@ -26,18 +26,21 @@ if [ "$mode" = prepare ]; then
 fi
 if [ "$mode" = pack ]; then
   rm -rf .devrun .devrun.tar.xz && mkdir .devrun
+  # netCDF writes only the calibration's ArviZ posterior file, which no run on the device
+  # machine makes; its own libraries (HDF5, curl, TLS, XML, ICU: over 20 MB compressed) would
+  # push the carried tree past the tool's 64 MiB. An empty stand-in with its name satisfies
+  # the loader instead: the binaries bind functions lazily, so only a call would fail.
+  for binary in "$@"; do
+    netcdf=$(ldd "$binary" | awk '/libnetcdf/ {print $1; exit}')
+    [ -n "$netcdf" ] && [ ! -f ".devrun/$netcdf" ] || continue
+    echo "int rbcal_netcdf_stand_in;" > .devrun/netcdf_stand_in.c
+    gcc -shared -fPIC -Wl,-soname,"$netcdf" -o ".devrun/$netcdf" .devrun/netcdf_stand_in.c && rm .devrun/netcdf_stand_in.c
+  done
   for binary in "$@"; do
     cp "$binary" .devrun/
-    for lib in $(ldd "$binary" | awk '/=>/ {print $3} /ld-linux/ {print $1}'); do cp -Ln "$lib" .devrun/; done
-  done
-  # ICU's data library (31 MB, pulled in by netCDF's XML reader) would push the carried tree
-  # past the tool's 64 MiB; nothing the solver runs converts text, so an empty stand-in that
-  # only satisfies the loader replaces it.
-  for data in .devrun/libicudata.so.*; do
-    [ -f "$data" ] || continue
-    version=${data##*.so.}
-    echo "const char icudt${version}_dat[64] __attribute__((aligned(16))) = {0};" > .devrun/icu_stub.c
-    gcc -shared -fPIC -Wl,-soname,"$(basename "$data")" -o "$data" .devrun/icu_stub.c && rm .devrun/icu_stub.c
+    for lib in $(LD_LIBRARY_PATH="$PWD/.devrun" ldd "$binary" | awk '/=>/ {print $3} /ld-linux/ {print $1}'); do
+      cp -Ln "$lib" .devrun/
+    done
   done
   tar cJf .devrun.tar.xz .devrun && rm -rf .devrun
   du -sh .devrun.tar.xz
