@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The offset c that makes the anchors' two resolutions one suspension: the runs at N_a 8 and 12
+"""The offset c that makes the anchors' resolutions one suspension: the runs at N_a 8, 12 and 16
 (same cells, same 16a gap) are taken as one continuum curve eta_re(phi_eff) seen at
 phi_eff = g_c(N_a) phi as run, and c is the value at which one curve fits both. The curve's form
 is an assumption, so three are used, each with eta_re = 1 at phi_eff 0:
-    exponential (one pair at a time): ln eta = alpha x, so ln eta_8 / ln eta_12 = g_c(8) / g_c(12)
+    exponential (two resolutions a, b at a time): ln eta = alpha x, so ln eta_a / ln eta_b = g_c(a) phi_a / (g_c(b) phi_b)
     log-quadratic (per Ca):           ln eta = a x + b x^2
     Krieger-Dougherty (per Ca):       ln eta = -k ln(1 - x / x_max)
 Weights are the runs' standard errors (relative, on ln eta). Prints c per pair, then chi^2 over c
@@ -30,28 +30,32 @@ def anchor_rows():
 
 
 def pair_offsets():
-    """[(point, c, c with the ratio moved by +-1 standard error)] under the exponential law."""
+    """[(point, (N_a a, N_a b), c, c with the ratio moved by +-1 standard error)] under the
+    exponential law, for every two resolutions run at a point (the N_a 16 runs' phi as run
+    differs from the others' by up to 0.7 %, so the law carries each run's own phi)."""
     out = []
     for point, by in sorted(anchor_runs().items()):
-        if 8 not in by or 12 not in by:
-            continue
-        (e8, s8, _), (e12, s12, _) = by[8], by[12]
-        y8, y12, s8, s12 = math.log(e8), math.log(e12), s8 / e8, s12 / e12
-        shifted = [solve_ratio((y8 + z * s8) / (y12 - z * s12)) for z in (1.0, -1.0)]
-        out.append((point, solve_ratio(y8 / y12), shifted))
+        tiers = sorted(by)
+        for i, a in enumerate(tiers):
+            for b in tiers[i + 1:]:
+                (ea, sa, pa), (eb, sb, pb) = by[a], by[b]
+                ya, yb, sa, sb = math.log(ea), math.log(eb), sa / ea, sb / eb
+                solve = lambda ratio: solve_ratio(ratio * pb / pa, a, b)
+                shifted = [solve((ya + z * sa) / (yb - z * sb)) for z in (1.0, -1.0)]
+                out.append((point, (a, b), solve(ya / yb), shifted))
     return out
 
 
-def solve_ratio(ratio):
-    """c with g_c(8) / g_c(12) = ratio (bisection on 0-5; None outside)."""
-    f = lambda c: g(c, 8) / g(c, 12) - ratio
-    a, b = 0.0, 5.0
-    if f(a) * f(b) > 0:
+def solve_ratio(ratio, a=8, b=12):
+    """c with g_c(a) / g_c(b) = ratio (bisection on 0-5; None outside)."""
+    f = lambda c: g(c, a) / g(c, b) - ratio
+    lo, hi = 0.0, 5.0
+    if f(lo) * f(hi) > 0:
         return None
     for _ in range(60):
-        m = 0.5 * (a + b)
-        a, b = (a, m) if f(a) * f(m) <= 0 else (m, b)
-    return 0.5 * (a + b)
+        m = 0.5 * (lo + hi)
+        lo, hi = (lo, m) if f(lo) * f(m) <= 0 else (m, hi)
+    return 0.5 * (lo + hi)
 
 
 def weighted_fit(columns, y, sd):
@@ -97,11 +101,11 @@ def interval(offsets, chi2, rise):
 
 
 def main():
-    print("| pair (N_a 8, 12) | c, exponential law | c with the ratio +- its standard error |")
-    print("|---|---|---|")
+    print("| point | resolutions (N_a) | c, exponential law | c with the ratio +- its standard error |")
+    print("|---|---|---|---|")
     shown = lambda c: "-" if c is None else f"{c:.2f}"
-    for point, c, (lo, hi) in pair_offsets():
-        print(f"| {point} | {shown(c)} | {shown(hi)}-{shown(lo)} |")
+    for point, (a, b), c, (lo, hi) in pair_offsets():
+        print(f"| {point} | {a}, {b} | {shown(c)} | {shown(hi)}-{shown(lo)} |")
     print()
     rows = anchor_rows()
     offsets = np.arange(0.20, 2.501, 0.01)

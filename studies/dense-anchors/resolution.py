@@ -34,7 +34,10 @@ for point in sorted(runs):
 def three_tier_extrapolation(by, draws=4000, seed=1):
     """Where N_a 8, 12 and 16 all ran: the apparent order p of eta(N_a) = eta_inf + b N_a^-p
     (from (eta8 - eta12) / (eta12 - eta16)) and eta_inf, with their spread over draws of the
-    runs' sems (median, 16th and 84th percentiles); None where p leaves [0.25, 8]."""
+    runs' sems (median, 16th and 84th percentiles); None where p leaves [0.25, 8]. A power law
+    in eta_re is not what an offset makes: a thickening first order in 1/N_a moves phi_eff, and
+    where eta_re is convex in phi_eff that falls faster than first order and extrapolates too
+    high. pair_offset.py reads the tiers through the offset mapping instead."""
     import numpy as np
     rng = np.random.default_rng(seed)
 
