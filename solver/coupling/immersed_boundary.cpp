@@ -69,8 +69,8 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     return lattice_index(x, y, z, ny, nz);
   };
   const std::size_t keys = static_cast<std::size_t>(nx) * ny * nz;
-  // The keys in mesh order, then the sort, which is serial; the copies and stencils after
-  // it run in parallel (the serial version, which also copied positions and forces into
+  // The keys in mesh order, then the sort, which is serial; the copies after it run in
+  // parallel (the serial version, which also copied positions and forces into
   // place, was a third of a step's waiting). The (cell, node) pair of each place in mesh
   // order depends only on the cells' sizes: rebuilt when they change.
   auto& first = order.cell_first;
@@ -110,7 +110,10 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     order.nodes[i] = order.mesh_order[index_of_record(sorted[i])];
   order.position.resize(total);
   order.force.resize(total);
-  order.stencil.resize(total);
+  order.kernel = kernel;
+  order.nx = nx;
+  order.ny = ny;
+  order.nz = nz;
   const long count = static_cast<long>(total);
   constexpr long gather_ahead = 8;
 #pragma omp parallel for schedule(static)
@@ -125,7 +128,6 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
     const auto [c, n] = order.nodes[i];
     order.position[i] = positions[c][n];
     order.force[i] = forces[c][n];
-    order.stencil[i] = make_stencil(kernel, order.position[i], nx, ny, nz);
   }
 }
 
@@ -155,7 +157,7 @@ void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
   // so the sums do not depend on the thread count.
   auto spread_slab = [&](int slab) {
     for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g)
-      spread_one(order.stencil[g], order.force[g], f, ny, nz);
+      spread_one(order.stencil_of(g), order.force[g], f, ny, nz);
   };
   const SlabSchedule plan = slab_schedule(fluid.nx());
   for (const std::vector<int>& phase : plan.phase) {

@@ -35,9 +35,14 @@ struct NodeOrder {
   static constexpr int slab_count(int nx) { return (nx + slab_width - 1) / slab_width; }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
   std::vector<Vec3> position, force;                           // of nodes[g]
-  // Kernel stencils at position[g]: built once per membrane update, read by the spreading
-  // and again by the interpolation that follows the fluid step (the nodes have not moved).
-  std::vector<KernelStencil> stencil;
+  // The kernel and lattice the order was built for.
+  KernelKind kernel = KernelKind::Peskin4;
+  int nx = 0, ny = 0, nz = 0;
+  // The kernel stencil at position[g], for the spreading and again for the interpolation that
+  // follows the fluid step (the nodes have not moved). Computed where it is used: stored,
+  // the stencils (128 bytes a node) were written once and read twice per membrane update,
+  // and that traffic cost more than computing them (three square roots) each time.
+  KernelStencil stencil_of(std::size_t g) const { return make_stencil(kernel, position[g], nx, ny, nz); }
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   // Scratch: each node's key and (cell, node) in mesh order, the sort, the first node of
   // each cell in mesh order (the pairs and the firsts kept while the cells' sizes stay).

@@ -183,7 +183,7 @@ void ShearFlowSimulation::move_cells(double dt) {
   for (long g = 0; g < total; ++g) {
     const auto [cell, m] = order_.nodes[g];
     const Vec3& x = order_.position[g];
-    const Vec3 u1 = interpolate_field(order_.stencil[g], u, ny, nz) / steps;
+    const Vec3 u1 = interpolate_field(order_.stencil_of(g), u, ny, nz) / steps;
     Vec3 velocity = u1;
     if (case_.integrator != Integrator::Euler) {
       // Classical RK4 through the velocity field of this step (over dt).

@@ -220,7 +220,7 @@ TEST(NodeOrder, SortsStablyByTheSupportStartOnSmallAndLargeLattices) {
       const auto [c, n] = order.nodes[i];
       EXPECT_EQ(order.position[i], x[c][n]);
       EXPECT_EQ(order.force[i], f[c][n]);
-      EXPECT_EQ(order.stencil[i].wz, make_stencil(KernelKind::Peskin4, x[c][n], nx, ny, nz).wz);
+      EXPECT_EQ(order.stencil_of(i).wz, make_stencil(KernelKind::Peskin4, x[c][n], nx, ny, nz).wz);
       if (i == 0) continue;
       const auto [pc, pn] = order.nodes[i - 1];
       const std::size_t k = key_of(x[c][n]), pk = key_of(x[pc][pn]);
