@@ -36,7 +36,7 @@ struct CellObservables {
 // Wall-clock seconds spent in each part of step(), accumulated since the last reset.
 struct StepTimings {
   double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
-  double ordering = 0.0;         // sorting the nodes and building their stencils (order_nodes)
+  double ordering = 0.0;         // sorting the nodes and copying their positions and forces (order_nodes)
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field
   std::int64_t indicator_builds = 0;  // steps that rebuilt it (numerics.indicator_tolerance)
