@@ -12,20 +12,15 @@
 #   here:   bash scripts/device-batch.sh pack BINARY...
 #           the same for several binaries (a GPU build's rbcal and device_tests), compressed
 #           to .devrun.tar.xz, which the tool carries where the uncompressed folder would not
-#           fit beside the repository (scripts/gpu-check.sh unpacks it there).
+#           fit beside the repository (scripts/gpu-check.sh, and `run` without a .devrun/,
+#           unpack it there).
 # Back here, finished cases go to RUNS/TIER/NAME.out/ (result.json, series.csv), unfinished
 # ones with their checkpoint.bin and series.csv, where `rbcal simulate CASE -o RUNS/TIER/NAME.out
 # --resume` continues them.
 set -u
 mode=$1; shift
-if [ "$mode" = prepare ]; then
-  rm -rf .devrun && mkdir .devrun && cp "$1" .devrun/rbcal
-  for lib in $(ldd .devrun/rbcal | awk '/=>/ {print $3} /ld-linux/ {print $1}'); do cp -L "$lib" .devrun/; done
-  du -sh .devrun
-  exit 0
-fi
-if [ "$mode" = pack ]; then
-  rm -rf .devrun .devrun.tar.xz && mkdir .devrun
+collect() {  # BINARY...: into .devrun/ with their shared libraries and the loader
+  rm -rf .devrun && mkdir .devrun
   # netCDF writes only the calibration's ArviZ posterior file, which no run on the device
   # machine makes; its own libraries (HDF5, curl, TLS, XML, ICU: over 20 MB compressed) would
   # push the carried tree past the tool's 64 MiB. An empty stand-in with its name satisfies
@@ -42,6 +37,16 @@ if [ "$mode" = pack ]; then
       cp -Ln "$lib" .devrun/
     done
   done
+}
+if [ "$mode" = prepare ]; then
+  collect "$1"
+  [ "$(basename "$1")" = rbcal ] || mv ".devrun/$(basename "$1")" .devrun/rbcal
+  du -sh .devrun
+  exit 0
+fi
+if [ "$mode" = pack ]; then
+  rm -f .devrun.tar.xz
+  collect "$@"
   tar cJf .devrun.tar.xz .devrun && rm -rf .devrun
   du -sh .devrun.tar.xz
   exit 0
@@ -49,6 +54,8 @@ fi
 [ "$mode" = run ] || { echo "usage: $0 prepare BINARY | pack BINARY... | run LIMIT TIER CASE_NAME..."; exit 2; }
 limit=$1 tier=$2; shift 2
 here=$(pwd)
+# The folder as carried, or unpacked from the archive that `pack` made.
+[ -d .devrun ] || tar xJf .devrun.tar.xz || { echo "neither .devrun/ nor .devrun.tar.xz (prepare or pack first)"; exit 2; }
 lscpu | grep -E "Model name|^CPU\(s\)|L3"
 mkdir -p /tmp/runs
 start=$(date +%s)
