@@ -5,10 +5,12 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/backend_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_validators.hpp"
+#include "solver/fluid/fluid_lattice.hpp"
 #include "solver/simulation/case_runner.hpp"
 #include "solver/simulation/window_drift.hpp"
 
@@ -25,6 +27,7 @@ struct SimulateOptions {
   long long max_steps = 0;
   int coupling_interval = 0;
   std::string backend = "cpu";
+  std::string prefetch = "auto";
 };
 
 // The window's late half against its early half, and a warning where it drifts.
@@ -52,6 +55,7 @@ void run_simulate(const SimulateOptions& o) {
   ro.max_steps = o.max_steps;
   ro.coupling_interval = o.coupling_interval;
   ro.backend = backend_from_option(o.backend);
+  ro.prefetch_distance = o.prefetch == "auto" ? -1 : std::stoi(o.prefetch);
   std::cerr << "rbcal simulate: " << o.case_path << " -> " << out << "/\n";
   const nlohmann::json j = solver::run_case(c, ro);
   if (!j.contains("result")) {
@@ -99,6 +103,13 @@ void add_simulate_command(CLI::App& app) {
                   "at 2). Recorded in coupling_interval_changes.json and result.json")
       ->check(CLI::Range(1, 1000));
   add_backend_option(cmd, o->backend);
+  std::vector<std::string> distances = {"auto"};
+  for (const int d : solver::kPrefetchDistances) distances.push_back(std::to_string(d));
+  cmd->add_option("--prefetch", o->prefetch,
+                  "How far ahead the fluid update prefetches its read streams, in populations (0: none), or auto: the "
+                  "fastest on this host, timed at the start of the run. The results do not depend on it")
+      ->check(CLI::IsMember(distances))
+      ->capture_default_str();
   cmd->callback([o] { run_simulate(*o); });
 }
 

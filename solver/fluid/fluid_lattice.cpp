@@ -1,6 +1,9 @@
 #include "solver/fluid/fluid_lattice.hpp"
 
 #include <algorithm>
+#include <array>
+#include <chrono>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -46,11 +49,7 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   require(config.nx >= 1 && config.ny >= 1 && config.nz >= 1, "lattice dimensions must be >= 1");
   require(config.viscosity > 0.0, "viscosity must be positive");
   require(config.magic > 0.0, "TRT magic parameter must be positive");
-  std::string compiled;
-  for (const int d : kPrefetchDistances) compiled += (compiled.empty() ? "" : ", ") + std::to_string(d);
-  require(std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), config.prefetch_distance) !=
-              kPrefetchDistances.end(),
-          "prefetch distance " + std::to_string(config.prefetch_distance) + " is not one of " + compiled);
+  set_prefetch_distance(config.prefetch_distance);
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
   component_stride_ = component_stride(nodes_);
   row_length_ = whole_vectors(static_cast<std::size_t>(config.nz));
@@ -232,7 +231,48 @@ FluidLattice::RowUpdate<T> FluidLattice::row_update() const {
   return update;
 }
 
-void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
+void FluidLattice::set_prefetch_distance(int distance) {
+  std::string compiled;
+  for (const int d : kPrefetchDistances) compiled += (compiled.empty() ? "" : ", ") + std::to_string(d);
+  require(std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), distance) != kPrefetchDistances.end(),
+          "prefetch distance " + std::to_string(distance) + " is not one of " + compiled);
+  config_.prefetch_distance = distance;
+}
+
+int FluidLattice::choose_fastest_prefetch_distance(int rounds) {
+  require(rounds >= 1, "prefetch timing needs at least one round");
+  using clock = std::chrono::steady_clock;
+  std::array<double, kPrefetchDistances.size()> fastest;
+  fastest.fill(std::numeric_limits<double>::infinity());
+  // Rounds over all distances rather than all rounds of one distance at a time: a host
+  // whose speed drifts then weighs on every distance alike.
+  // Each sample repeats the update for at least 10 ms, so that a small lattice's samples are
+  // not the timer's and the scheduler's noise; its time is the mean per update.
+  constexpr double kSampleSeconds = 0.010;
+  for (int r = 0; r < rounds; ++r)
+    for (std::size_t i = 0; i < kPrefetchDistances.size(); ++i) {
+      config_.prefetch_distance = kPrefetchDistances[i];
+      const auto start = clock::now();
+      double elapsed = 0.0;
+      int updates = 0;
+      do {
+        update_rows(nullptr, false);
+        ++updates;
+        elapsed = std::chrono::duration<double>(clock::now() - start).count();
+      } while (elapsed < kSampleSeconds);
+      fastest[i] = std::min(fastest[i], elapsed / updates);
+    }
+  // The default distance unless another is clearly (3 %) faster: within that the samples'
+  // noise, not the host, would choose.
+  const std::size_t best = static_cast<std::size_t>(std::min_element(fastest.begin(), fastest.end()) - fastest.begin());
+  const std::size_t standard = static_cast<std::size_t>(
+      std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), FluidConfig{}.prefetch_distance) -
+      kPrefetchDistances.begin());
+  config_.prefetch_distance = kPrefetchDistances[fastest[standard] <= 1.03 * fastest[best] ? standard : best];
+  return config_.prefetch_distance;
+}
+
+void FluidLattice::update_rows(double* const velocity_out[3], bool accumulate) {
   const int nx = config_.nx, ny = config_.ny;
   const RowUpdate<double> update_double = row_update<double>();
   const RowUpdate<float> update_float = row_update<float>();
@@ -248,6 +288,10 @@ void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
       }
     simd::store_fence();  // streaming stores visible before the barrier
   }
+}
+
+void FluidLattice::step(double* const velocity_out[3], bool accumulate) {
+  update_rows(velocity_out, accumulate);
   f_.swap(f_next_);
   h_.swap(h_next_);
   ++steps_;

@@ -103,6 +103,14 @@ class FluidLattice {
   // velocity is added to what velocity_out holds (the sum over a coupling interval).
   void step(double* const velocity_out[3] = nullptr, bool accumulate = false);
 
+  // Sets the prefetch distance (one of kPrefetchDistances; the results do not depend on it).
+  void set_prefetch_distance(int distance);
+  // Times the update at every compiled prefetch distance on this lattice, `rounds` times
+  // each (interleaved, the fastest of each kept), and keeps the fastest distance (the
+  // default one unless another is 3 % faster), which it returns. The timed updates write only the step's scratch populations: the state, the
+  // step count and every field stay as they were.
+  int choose_fastest_prefetch_distance(int rounds = 5);
+
   NodeMoments moments(std::size_t node) const;
   // The whole state (post-collision populations and step count), for checkpoints, in the
   // unpadded layout q * packed + node (packed: the node count rounded up to the
@@ -123,6 +131,8 @@ class FluidLattice {
   // update_row at config_.prefetch_distance.
   template <class T>
   RowUpdate<T> row_update() const;
+  // Every row from the current populations into the next ones (no swap).
+  void update_rows(double* const velocity_out[3], bool accumulate);
   // Population q at index i of a padded population array, unshifted; and its store.
   double stored(int q, std::size_t i) const {
     return config_.single_precision ? static_cast<double>(h_[q * stride_ + i]) + rest(q) : f_[q * stride_ + i];

@@ -149,6 +149,7 @@ class CaseRun {
   }
 
   nlohmann::json run() {
+    prefetch_ = sim_.set_prefetch_distance(opt_.prefetch_distance);
     announce();
     const bool resuming = opt_.resume && fs::exists(checkpoint_path());
     if (!resuming) start_interval_changes();
@@ -212,6 +213,9 @@ class CaseRun {
     if (c_.coupling_interval_chosen && opt_.coupling_interval == 0)
       *opt_.progress << "  coupling interval " << c_.coupling_interval << " (auto: K_s,lu (sum phi^2)^3 = "
                      << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
+    if (opt_.backend == Backend::Cpu)
+      *opt_.progress << "  fluid update prefetch " << prefetch_ << " populations ahead"
+                     << (opt_.prefetch_distance < 0 ? " (timed on this host)" : "") << "\n";
   }
 
   // Restores the checkpoint and returns the series rows up to it (later ones are recomputed),
@@ -350,6 +354,7 @@ class CaseRun {
         {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
         {"backend", opt_.backend == Backend::Device ? "device (" + device_description() + ")" : "cpu"},
     };
+    if (opt_.backend == Backend::Cpu) j["result"]["prefetch_distance"] = prefetch_;
     // The window's late half against its early half: a drift of several sd says the blocking
     // error understates the run's error (a longer run, raised strain_end and --resume, tells).
     const WindowDrift drift = window_drift(window_.stresslet, eta.mean > 0.0 ? eta.sem / eta.mean : 0.0);
@@ -388,6 +393,7 @@ class CaseRun {
   const std::chrono::steady_clock::time_point start_;
   ShearFlowSimulation sim_;
   std::int64_t total_steps_ = 0, record_every_ = 1, vtk_every_ = 0, checkpoint_every_ = 0;
+  int prefetch_ = 0;  // the fluid update's prefetch distance in use
   std::int64_t first_step_ = 1;
   WindowSamples window_;
   std::ofstream series_;

@@ -39,6 +39,11 @@ struct RunOptions {
   int coupling_interval = 0;
   bool overwrite = false;  // start afresh in a folder that holds a run, discarding it
   Backend backend = Backend::Cpu;  // Device: every step on the device path (a GPU in a CUDA build)
+  // The fluid update's prefetch distance (FluidConfig::prefetch_distance; the results are
+  // the same at any). Negative: the fastest on this host and lattice, timed at the start of
+  // the run (a few dozen updates' time, the state untouched), so that a run resumed on
+  // another host gets that host's best.
+  int prefetch_distance = -1;
 };
 
 // Returns the result JSON (also written to result.json), or, when max_steps or a signal

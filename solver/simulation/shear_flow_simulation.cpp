@@ -220,6 +220,13 @@ void ShearFlowSimulation::move_cells(double dt) {
   }
 }
 
+int ShearFlowSimulation::set_prefetch_distance(int distance) {
+  if (device_) return 0;
+  if (distance < 0) return fluid_.choose_fastest_prefetch_distance();
+  fluid_.set_prefetch_distance(distance);
+  return distance;
+}
+
 void ShearFlowSimulation::step() {
   if (device_) {
     device_->step();

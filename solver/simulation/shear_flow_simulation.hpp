@@ -66,6 +66,11 @@ class ShearFlowSimulation {
 
   void step();
   Observables observe() const;
+  // The fluid update's prefetch distance (FluidConfig::prefetch_distance, a property of the
+  // host: the results are the same at any): the given one, or for a negative one the
+  // fastest on this lattice and host, timed without changing the state. Returns it; 0 on
+  // the device path, which does not prefetch.
+  int set_prefetch_distance(int distance);
 
   const StepTimings& timings() const;
   void reset_timings();
