@@ -215,7 +215,11 @@ class CaseRun {
                      << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
     if (opt_.backend == Backend::Cpu)
       *opt_.progress << "  fluid update prefetch " << prefetch_ << " populations ahead"
-                     << (opt_.prefetch_distance < 0 ? " (timed on this host)" : "") << "\n";
+                     << (opt_.prefetch_distance >= 0 ? ""
+                         : sim_.fluid().node_count() >= ShearFlowSimulation::kPrefetchTimingNodes
+                             ? " (timed on this host)"
+                             : " (the default: a lattice too small to time)")
+                     << "\n";
   }
 
   // Restores the checkpoint and returns the series rows up to it (later ones are recomputed),

@@ -222,7 +222,9 @@ void ShearFlowSimulation::move_cells(double dt) {
 
 int ShearFlowSimulation::set_prefetch_distance(int distance) {
   if (device_) return 0;
-  if (distance < 0) return fluid_.choose_fastest_prefetch_distance();
+  if (distance < 0)
+    return fluid_.node_count() >= kPrefetchTimingNodes ? fluid_.choose_fastest_prefetch_distance()
+                                                        : fluid_.config().prefetch_distance;
   fluid_.set_prefetch_distance(distance);
   return distance;
 }

@@ -68,9 +68,13 @@ class ShearFlowSimulation {
   Observables observe() const;
   // The fluid update's prefetch distance (FluidConfig::prefetch_distance, a property of the
   // host: the results are the same at any): the given one, or for a negative one the
-  // fastest on this lattice and host, timed without changing the state. Returns it; 0 on
-  // the device path, which does not prefetch.
+  // fastest on this lattice and host, timed without changing the state (on lattices of at
+  // least kPrefetchTimingNodes; smaller ones keep the default). Returns it; 0 on the device
+  // path, which does not prefetch.
   int set_prefetch_distance(int distance);
+  // Below this many nodes the timing (about half a second) is not worth it: such lattices
+  // largely fit in the caches and their runs are short (a test's capsule).
+  static constexpr std::size_t kPrefetchTimingNodes = 65536;
 
   const StepTimings& timings() const;
   void reset_timings();
