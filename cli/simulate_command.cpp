@@ -107,7 +107,8 @@ void add_simulate_command(CLI::App& app) {
   for (const int d : solver::kPrefetchDistances) distances.push_back(std::to_string(d));
   cmd->add_option("--prefetch", o->prefetch,
                   "How far ahead the fluid update prefetches its read streams, in populations (0: none), or auto: the "
-                  "fastest on this host, timed at the start of the run. The results do not depend on it")
+                  "fastest on this host, timed at the start of the run (lattices under 65536 nodes keep 64). The "
+                  "results do not depend on it")
       ->check(CLI::IsMember(distances))
       ->capture_default_str();
   cmd->callback([o] { run_simulate(*o); });

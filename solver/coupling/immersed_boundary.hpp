@@ -62,12 +62,13 @@ struct SlabSchedule {
 };
 SlabSchedule slab_schedule(int nx);
 
-// Fills order, stencils included, for these nodes (forces: the same shape as positions).
+// Fills order for these nodes, with the kernel and lattice its stencils are computed for
+// (forces: the same shape as positions).
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);
 
 // Adds each node's force (lattice units, force per node) to the lattice force field.
-// (order: from order_nodes, whose stencils carry the kernel.)
+// (order: from order_nodes, which carries the kernel.)
 void spread_forces(const NodeOrder& order, FluidLattice& fluid);
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);

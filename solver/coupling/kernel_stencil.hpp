@@ -14,8 +14,8 @@
 
 namespace rbcal::solver {
 
-// Two cache lines exactly (16-bit indices: lattices up to 32767 nodes a side): the
-// stencils of all nodes are stored once per membrane update and read twice.
+// Two cache lines exactly (16-bit indices: lattices up to 32767 nodes a side); built where
+// it is used, from a node's position.
 struct alignas(64) KernelStencil {
   std::array<double, 4> wx{}, wy{}, wz{};
   std::array<std::int16_t, 4> x{}, y{}, z{};  // lattice indices (wrapped in x and z)

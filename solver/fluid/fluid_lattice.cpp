@@ -265,6 +265,8 @@ int FluidLattice::choose_fastest_prefetch_distance(int rounds) {
   // The default distance unless another is clearly (3 %) faster: within that the samples'
   // noise, not the host, would choose.
   const std::size_t best = static_cast<std::size_t>(std::min_element(fastest.begin(), fastest.end()) - fastest.begin());
+  static_assert(std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), FluidConfig{}.prefetch_distance) !=
+                kPrefetchDistances.end());
   const std::size_t standard = static_cast<std::size_t>(
       std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), FluidConfig{}.prefetch_distance) -
       kPrefetchDistances.begin());

@@ -107,8 +107,10 @@ class FluidLattice {
   void set_prefetch_distance(int distance);
   // Times the update at every compiled prefetch distance on this lattice, `rounds` times
   // each (interleaved, the fastest of each kept), and keeps the fastest distance (the
-  // default one unless another is 3 % faster), which it returns. The timed updates write only the step's scratch populations: the state, the
-  // step count and every field stay as they were.
+  // default one unless another is 3 % faster), which it returns. The timed updates write
+  // only the step's scratch populations: the state, the step count and every field stay
+  // as they were. (They write no velocity field, which coupled steps do: the choice is for
+  // the update's population streams.)
   int choose_fastest_prefetch_distance(int rounds = 5);
 
   NodeMoments moments(std::size_t node) const;

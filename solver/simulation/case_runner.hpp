@@ -41,8 +41,9 @@ struct RunOptions {
   Backend backend = Backend::Cpu;  // Device: every step on the device path (a GPU in a CUDA build)
   // The fluid update's prefetch distance (FluidConfig::prefetch_distance; the results are
   // the same at any). Negative: the fastest on this host and lattice, timed at the start of
-  // the run (a few dozen updates' time, the state untouched), so that a run resumed on
-  // another host gets that host's best.
+  // the run (40 samples of at least 10 ms, the state untouched), so that a run resumed on
+  // another host gets that host's best; lattices under
+  // ShearFlowSimulation::kPrefetchTimingNodes keep the default untimed.
   int prefetch_distance = -1;
 };
 
