@@ -265,11 +265,10 @@ int FluidLattice::choose_fastest_prefetch_distance(int rounds) {
   // The default distance unless another is clearly (3 %) faster: within that the samples'
   // noise, not the host, would choose.
   const std::size_t best = static_cast<std::size_t>(std::min_element(fastest.begin(), fastest.end()) - fastest.begin());
-  static_assert(std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), FluidConfig{}.prefetch_distance) !=
-                kPrefetchDistances.end());
-  const std::size_t standard = static_cast<std::size_t>(
+  constexpr std::size_t standard = static_cast<std::size_t>(
       std::find(kPrefetchDistances.begin(), kPrefetchDistances.end(), FluidConfig{}.prefetch_distance) -
       kPrefetchDistances.begin());
+  static_assert(standard < kPrefetchDistances.size(), "the default prefetch distance is a compiled one");
   config_.prefetch_distance = kPrefetchDistances[fastest[standard] <= 1.03 * fastest[best] ? standard : best];
   return config_.prefetch_distance;
 }

@@ -214,11 +214,10 @@ class CaseRun {
       *opt_.progress << "  coupling interval " << c_.coupling_interval << " (auto: K_s,lu (sum phi^2)^3 = "
                      << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
     if (opt_.backend == Backend::Cpu)
-      *opt_.progress << "  fluid update prefetch " << prefetch_ << " populations ahead"
-                     << (opt_.prefetch_distance >= 0 ? ""
-                         : sim_.fluid().node_count() >= ShearFlowSimulation::kPrefetchTimingNodes
-                             ? " (timed on this host)"
-                             : " (the default: a lattice too small to time)")
+      *opt_.progress << "  fluid update prefetch " << prefetch_.distance << " populations ahead"
+                     << (prefetch_.timed                     ? " (timed on this host)"
+                         : opt_.prefetch_distance < 0 ? " (the default: a lattice too small to time)"
+                                                      : "")
                      << "\n";
   }
 
@@ -358,7 +357,7 @@ class CaseRun {
         {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()},
         {"backend", opt_.backend == Backend::Device ? "device (" + device_description() + ")" : "cpu"},
     };
-    if (opt_.backend == Backend::Cpu) j["result"]["prefetch_distance"] = prefetch_;
+    if (opt_.backend == Backend::Cpu) j["result"]["prefetch_distance"] = prefetch_.distance;
     // The window's late half against its early half: a drift of several sd says the blocking
     // error understates the run's error (a longer run, raised strain_end and --resume, tells).
     const WindowDrift drift = window_drift(window_.stresslet, eta.mean > 0.0 ? eta.sem / eta.mean : 0.0);
@@ -397,7 +396,7 @@ class CaseRun {
   const std::chrono::steady_clock::time_point start_;
   ShearFlowSimulation sim_;
   std::int64_t total_steps_ = 0, record_every_ = 1, vtk_every_ = 0, checkpoint_every_ = 0;
-  int prefetch_ = 0;  // the fluid update's prefetch distance in use
+  ShearFlowSimulation::PrefetchChoice prefetch_;  // the fluid update's prefetch distance in use
   std::int64_t first_step_ = 1;
   WindowSamples window_;
   std::ofstream series_;

@@ -220,13 +220,14 @@ void ShearFlowSimulation::move_cells(double dt) {
   }
 }
 
-int ShearFlowSimulation::set_prefetch_distance(int distance) {
-  if (device_) return 0;
-  if (distance < 0)
-    return fluid_.node_count() >= kPrefetchTimingNodes ? fluid_.choose_fastest_prefetch_distance()
-                                                        : fluid_.config().prefetch_distance;
-  fluid_.set_prefetch_distance(distance);
-  return distance;
+ShearFlowSimulation::PrefetchChoice ShearFlowSimulation::set_prefetch_distance(int distance) {
+  if (device_) return {};
+  if (distance >= 0) {
+    fluid_.set_prefetch_distance(distance);
+    return {distance, false};
+  }
+  if (fluid_.node_count() < kPrefetchTimingNodes) return {fluid_.config().prefetch_distance, false};
+  return {fluid_.choose_fastest_prefetch_distance(), true};
 }
 
 void ShearFlowSimulation::step() {

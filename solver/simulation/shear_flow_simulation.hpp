@@ -69,9 +69,13 @@ class ShearFlowSimulation {
   // The fluid update's prefetch distance (FluidConfig::prefetch_distance, a property of the
   // host: the results are the same at any): the given one, or for a negative one the
   // fastest on this lattice and host, timed without changing the state (on lattices of at
-  // least kPrefetchTimingNodes; smaller ones keep the default). Returns it; 0 on the device
-  // path, which does not prefetch.
-  int set_prefetch_distance(int distance);
+  // least kPrefetchTimingNodes; smaller ones keep the default). Returns it, and whether it
+  // was timed; 0 on the device path, which does not prefetch.
+  struct PrefetchChoice {
+    int distance = 0;
+    bool timed = false;
+  };
+  PrefetchChoice set_prefetch_distance(int distance);
   // Below this many nodes the timing (about half a second) is not worth it: such lattices
   // largely fit in the caches and their runs are short (a test's capsule).
   static constexpr std::size_t kPrefetchTimingNodes = 65536;
