@@ -18,7 +18,7 @@ struct CoupledStepTimings {
   int nx = 0, ny = 0, nz = 0;
   std::size_t cells = 0, membrane_nodes = 0;
   int coupling_interval = 1;
-  std::int64_t steps = 0, indicator_builds = 0;
+  std::int64_t steps = 0, indicator_builds = 0, ordering_sorts = 0;
   // Seconds per step.
   double fluid = 0, membrane_forces = 0, ordering = 0, spreading = 0, indicator = 0, interpolation = 0;
   double plain_fluid = 0;

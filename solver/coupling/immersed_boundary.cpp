@@ -53,8 +53,8 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
 
 }  // namespace
 
-void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
-                 const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order) {
+void sort_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz,
+                NodeOrder& order) {
   // Sorted by the lattice index (x * ny + y) * nz + z of the stencil's first node; stable,
   // so the order (and every sum that follows it) does not depend on the thread count.
   // The modulo only where a support starts outside the box (an integer division per
@@ -108,12 +108,19 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < static_cast<long>(total); ++i)
     order.nodes[i] = order.mesh_order[index_of_record(sorted[i])];
-  order.position.resize(total);
-  order.force.resize(total);
   order.kernel = kernel;
   order.nx = nx;
   order.ny = ny;
   order.nz = nz;
+}
+
+void gather_nodes(const std::vector<std::vector<Vec3>>& positions, const std::vector<std::vector<Vec3>>& forces,
+                  NodeOrder& order) {
+  const std::size_t total = order.nodes.size();
+  if (order.cell_first.size() != positions.size() + 1 || order.cell_first.back() != total)
+    throw std::logic_error("gather_nodes: the cells are not those sorted");
+  order.position.resize(total);
+  order.force.resize(total);
   const long count = static_cast<long>(total);
   constexpr long gather_ahead = 8;
 #pragma omp parallel for schedule(static)
@@ -131,20 +138,35 @@ void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positi
   }
 }
 
+void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
+                 const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order) {
+  sort_nodes(kernel, positions, nx, ny, nz, order);
+  gather_nodes(positions, forces, order);
+}
+
 SlabSchedule slab_schedule(int nx) {
   const int width = NodeOrder::slab_width;
   const int slabs = NodeOrder::slab_count(nx);
-  // The slab s may write columns from width s up to the last start in it plus the widest
-  // support less one; beyond nx - 1 that wraps onto slab 0 (and never further, since the
-  // width is at least the support less one).
-  const int reach = kernel_support(KernelKind::Peskin4) - 1;
-  auto wraps_onto_slab0 = [&](int s) { return std::min(width * s + width - 1, nx - 1) + reach >= nx; };
+  // Slab s holds the stencils that started in its columns when sorted; they may since have
+  // moved drift_columns either way, and each reaches support - 1 columns past its start.
+  const int left = NodeOrder::drift_columns, right = kernel_support(KernelKind::Peskin4) - 1 + NodeOrder::drift_columns;
+  static_assert(NodeOrder::slab_width * (NodeOrder::slab_phases - 1) >
+                    kernel_support(KernelKind::Peskin4) - 2 + 2 * NodeOrder::drift_columns,
+                "slabs of one phase away from the wrap would share columns");
   SlabSchedule plan;
+  std::vector<std::vector<int>> writer(NodeOrder::slab_phases, std::vector<int>(nx, -1));
   for (int s = 0; s < slabs; ++s) {
-    // Slab 0 meets a wrapping slab of the same parity in one phase; the wrap of a slab of
-    // the other parity is harmless. A lone slab (nx <= width) has no other to meet.
-    const bool meets_slab0 = s > 0 && s % 2 == 0 && wraps_onto_slab0(s);
-    (meets_slab0 ? plan.tail : plan.phase[s % 2]).push_back(s);
+    const int first = width * s - left, last = std::min(width * s + width - 1, nx - 1) + right;
+    // Columns of the same phase already taken (a slab wider than the box meets itself).
+    std::vector<int>& taken = writer[s % NodeOrder::slab_phases];
+    bool meets = last - first + 1 > nx;
+    for (int c = first; c <= last && !meets; ++c) meets = taken[wrap_index(c, nx)] != -1;
+    if (meets) {
+      plan.tail.push_back(s);
+      continue;
+    }
+    for (int c = first; c <= last; ++c) taken[wrap_index(c, nx)] = s;
+    plan.phase[s % NodeOrder::slab_phases].push_back(s);
   }
   return plan;
 }
@@ -152,8 +174,9 @@ SlabSchedule slab_schedule(int nx) {
 void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
   const int ny = fluid.ny(), nz = fluid.nz();
   double* const f[3] = {fluid.force(0), fluid.force(1), fluid.force(2)};
-  // A node's stencil reaches at most support - 1 columns past its slab, so the slabs of one
-  // phase can spread concurrently (slab_schedule). Within a slab the nodes keep their order,
+  // A node's stencil reaches at most support - 1 + drift_columns columns past its slab and
+  // drift_columns before it, so the slabs of one phase can spread concurrently
+  // (slab_schedule). Within a slab the nodes keep their order,
   // so the sums do not depend on the thread count.
   auto spread_slab = [&](int slab) {
     for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g)

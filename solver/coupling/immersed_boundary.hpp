@@ -28,9 +28,20 @@ inline KernelStencil make_stencil(KernelKind kernel, const Vec3& p, int nx, int 
 // positions and forces in mesh order through the sorted index cost as much as the
 // spreading itself). The x-slabs that parallel spreading colours are contiguous ranges.
 struct NodeOrder {
-  // Slab width in x: at least the widest support less one, so that slabs two apart never
-  // write the same lattice node.
+  // An order may be kept while every node stays within this many lattice spacings of
+  // where it stood when it was sorted: each stencil then starts at most one column away
+  // from its slab, which the slab schedule allows for (sorting is most of the ordering's
+  // cost).
+  static constexpr double max_drift = 1.0;
+  static constexpr int drift_columns = 1;
+  // Slabs of slab_width columns in x, spread in slab_phases parallel phases (slab s in
+  // phase s mod slab_phases): slabs slab_phases apart never write the same lattice node,
+  // with the widest support and a drift of drift_columns either way. Three phases of
+  // 4-column slabs rather than two of 5: on the bench case's 48 columns each phase then has
+  // an even number of slabs for two threads (two phases of five slabs left one thread idle
+  // for a fifth of the spreading).
   static constexpr int slab_width = 4;
+  static constexpr int slab_phases = 3;
   // The slabs of a lattice nx wide (the last one may be narrower).
   static constexpr int slab_count(int nx) { return (nx + slab_width - 1) / slab_width; }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> nodes;  // (cell, node)
@@ -51,19 +62,26 @@ struct NodeOrder {
   StableKeySort sort;
   std::vector<std::size_t> cell_first;
 };
-// How spread_forces visits the x-slabs of a lattice nx wide: two parallel phases, in each of
-// which no two slabs write a common lattice column (periodic wrap included, for the widest
-// support), then the slabs left to a serial tail. A slab whose stencils wrap around x onto
-// slab 0 of its own parity joins the tail: the last slab when the count is odd, the one
-// before it when the count is even and the last slab is one or two columns wide.
+// How spread_forces visits the x-slabs of a lattice nx wide: NodeOrder::slab_phases parallel
+// phases, in each of which no two slabs write a common lattice column (periodic wrap
+// included, for the widest support and stencils up to NodeOrder::drift_columns from their
+// slab), then, serially, the slabs that would meet one of their own phase across the
+// periodic wrap.
 struct SlabSchedule {
-  std::vector<int> phase[2];
+  std::vector<int> phase[NodeOrder::slab_phases];
   std::vector<int> tail;
 };
 SlabSchedule slab_schedule(int nx);
 
-// Fills order for these nodes, with the kernel and lattice its stencils are computed for
-// (forces: the same shape as positions).
+// Sorts the nodes by where their stencils start at these positions, for the kernel and
+// lattice the stencils are computed for.
+void sort_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions, int nx, int ny, int nz,
+                NodeOrder& order);
+// Copies the nodes' positions and forces (the shape of the sorted positions) into the
+// order's. The positions may lie up to NodeOrder::max_drift from those sorted.
+void gather_nodes(const std::vector<std::vector<Vec3>>& positions, const std::vector<std::vector<Vec3>>& forces,
+                  NodeOrder& order);
+// Both, from the same positions.
 void order_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                  const std::vector<std::vector<Vec3>>& forces, int nx, int ny, int nz, NodeOrder& order);
 

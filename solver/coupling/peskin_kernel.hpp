@@ -17,7 +17,7 @@ namespace rbcal::solver {
 
 enum class KernelKind { Linear2, Roma3, Peskin4 };
 
-RBCAL_HD inline int kernel_support(KernelKind k) { return k == KernelKind::Linear2 ? 2 : (k == KernelKind::Roma3 ? 3 : 4); }
+RBCAL_HD constexpr int kernel_support(KernelKind k) { return k == KernelKind::Linear2 ? 2 : (k == KernelKind::Roma3 ? 3 : 4); }
 
 RBCAL_HD inline double kernel_weight(KernelKind k, double r) {
   const double a = fabs(r);

@@ -131,8 +131,8 @@ void ShearFlowSimulation::compute_membrane_forces() {
   }
 }
 
-void ShearFlowSimulation::update_viscosity() {
-  if (case_.flow.viscosity_ratio == 1.0) return;
+bool ShearFlowSimulation::update_viscosity() {
+  if (case_.flow.viscosity_ratio == 1.0) return false;
   const double tolerance = case_.indicator_tolerance;
   if (tolerance > 0.0 && x_indicator_.size() == x_.size()) {
     double largest = 0.0;  // squared displacement since the last build
@@ -140,10 +140,28 @@ void ShearFlowSimulation::update_viscosity() {
     for (std::size_t i = 0; i < x_.size(); ++i)
       for (std::size_t m = 0; m < x_[i].size(); ++m)
         largest = std::max(largest, (x_[i][m] - x_indicator_[i][m]).squaredNorm());
-    if (largest <= tolerance * tolerance) return;
+    if (largest <= tolerance * tolerance) return false;
   }
   x_indicator_ = x_;
   rebuild_viscosity();
+  return true;
+}
+
+void ShearFlowSimulation::order_membrane_nodes(bool resort) {
+  // Sorted where the nodes stood at the last build of the inside fraction: none has moved
+  // more than the indicator tolerance since (update_viscosity), within the drift the
+  // spreading's slabs allow, and a resumed run sorts them from the same positions (the
+  // checkpoint holds them), so every sum keeps its order. Sorting is most of the ordering's
+  // cost; the inside fraction is rebuilt every 10 or so membrane updates on the bench case.
+  // Without an inside fraction (lambda 1), sorted at every update where the nodes stand.
+  const bool from_indicator =
+      x_indicator_.size() == x_.size() && case_.indicator_tolerance <= NodeOrder::max_drift;
+  if (!from_indicator || resort || !order_from_indicator_) {
+    sort_nodes(case_.kernel, from_indicator ? x_indicator_ : x_, units_.nx, units_.ny, units_.nz, order_);
+    order_from_indicator_ = from_indicator;
+    ++timings_.ordering_sorts;
+  }
+  gather_nodes(x_, f_, order_);
 }
 
 void ShearFlowSimulation::rebuild_viscosity() {
@@ -176,7 +194,7 @@ void ShearFlowSimulation::move_cells(double dt) {
     return Vec3(interpolate_field(make_stencil(k, p, nx, ny, nz), u, ny, nz) / steps);
   };
   // All nodes of all cells in one parallel loop, in the order of their stencils' rows
-  // (order_nodes, built from these positions when the forces were spread).
+  // (order_membrane_nodes, gathered from these positions when the forces were spread).
   const long total = static_cast<long>(order_.nodes.size());
   double fastest = 0.0;  // squared node speed
 #pragma omp parallel for schedule(static) reduction(max : fastest)
@@ -249,13 +267,13 @@ void ShearFlowSimulation::step() {
   if (fluid_.steps_done() % interval == 0) {
     compute_membrane_forces();
     lap(timings_.membrane_forces);
-    order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
+    const bool rebuilt = update_viscosity();
+    lap(timings_.indicator);
+    order_membrane_nodes(rebuilt);
     lap(timings_.ordering);
     fluid_.clear_force();
     spread_forces(order_, fluid_);
     lap(timings_.spreading);
-    update_viscosity();
-    lap(timings_.indicator);
   }
   // The fluid writes the velocity field the membrane update interpolates: at every step
   // of the interval, summed, for the interval mean; at the last step for the last step's.
@@ -346,14 +364,15 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
   // Within a coupling interval the force field is the one spread at its start, from the
   // positions and forces the checkpoint holds. (A run resumed under another interval
   // spreads it from them too: its next membrane update may be steps away.)
-  if (fluid_.steps_done() % case_.coupling_interval != 0 || saved_interval != case_.coupling_interval) {
-    order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
-    fluid_.clear_force();
-    spread_forces(order_, fluid_);
-  }
   if (contrast) {
     x_indicator_ = std::move(s.indicator_positions);
     rebuild_viscosity();
+  }
+  order_from_indicator_ = false;
+  if (fluid_.steps_done() % case_.coupling_interval != 0 || saved_interval != case_.coupling_interval) {
+    order_membrane_nodes(true);
+    fluid_.clear_force();
+    spread_forces(order_, fluid_);
   }
   if (device_) {
     device_->upload(host_state(), fluid_.steps_done());

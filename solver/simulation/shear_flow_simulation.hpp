@@ -36,7 +36,8 @@ struct CellObservables {
 // Wall-clock seconds spent in each part of step(), accumulated since the last reset.
 struct StepTimings {
   double membrane_forces = 0.0;  // elasticity, bending, volume penalty of all cells
-  double ordering = 0.0;         // sorting the nodes and copying their positions and forces (order_nodes)
+  double ordering = 0.0;         // sorting the nodes (when needed) and copying their positions and forces
+  std::int64_t ordering_sorts = 0;  // steps that sorted the nodes (the others kept the order)
   double spreading = 0.0;        // clearing the force field and spreading to the lattice
   double indicator = 0.0;        // inside fraction and viscosity field
   std::int64_t indicator_builds = 0;  // steps that rebuilt it (numerics.indicator_tolerance)
@@ -130,9 +131,12 @@ class ShearFlowSimulation {
  private:
   void compute_membrane_forces();
   // Rebuilds the inside fraction and viscosity once a node has moved more than
-  // numerics.indicator_tolerance since the last rebuild (always when it is 0).
-  void update_viscosity();
+  // numerics.indicator_tolerance since the last rebuild (always when it is 0); true if it did.
+  bool update_viscosity();
   void rebuild_viscosity();  // from x_indicator_
+  // Fills order_ for the spreading and the interpolation, sorting the nodes only when
+  // `resort` or when the order was not sorted from x_indicator_.
+  void order_membrane_nodes(bool resort);
   void move_cells(double dt);
   // On the device path, copy its state back where the host's copy is out of date.
   void refresh_cells() const;
@@ -160,6 +164,7 @@ class ShearFlowSimulation {
   std::unique_ptr<DeviceStepper> device_;
   mutable bool cells_stale_ = false, fluid_stale_ = false;
   NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
+  bool order_from_indicator_ = false;  // order_ sorted from the current x_indicator_
 };
 
 }  // namespace rbcal::solver

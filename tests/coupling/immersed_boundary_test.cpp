@@ -129,56 +129,72 @@ TEST(Stencil, WeightsEqualTheKernelAtEachNode) {
 }
 
 // The slabs of one parallel phase never write a common lattice column, for every lattice
-// width: each slab's columns are those its nodes' stencils (starting anywhere in the slab,
-// the widest support) can reach, wrapped periodically. The even slab counts whose last slab
-// is one or two columns wide (nx = 14, 54, 78, ...) once let the slab before the last wrap
-// onto slab 0 in the same phase.
+// width: each slab's columns are those its nodes' stencils (the widest support, starting
+// anywhere in the slab or up to drift_columns beyond it either way, as nodes may have
+// moved since they were sorted) can reach, wrapped periodically. Slab counts whose last
+// slab is narrow once let the slab before the last wrap onto slab 0 in the same phase.
+// Most slabs run in the parallel phases, not in the serial tail.
 TEST(Spreading, SlabsOfOnePhaseNeverShareAColumn) {
   const int width = NodeOrder::slab_width, support = kernel_support(KernelKind::Peskin4);
+  const int drift = NodeOrder::drift_columns;
   for (int nx = 1; nx <= 200; ++nx) {
     const SlabSchedule plan = slab_schedule(nx);
     const int slabs = (nx + width - 1) / width;
     std::vector<int> seen(slabs, 0);
-    for (const auto* list : {&plan.phase[0], &plan.phase[1], &plan.tail})
-      for (int s : *list) ++seen[s];
+    for (int s : plan.tail) ++seen[s];
+    for (const std::vector<int>& phase : plan.phase)
+      for (int s : phase) ++seen[s];
     for (int s = 0; s < slabs; ++s) EXPECT_EQ(seen[s], 1) << "nx " << nx << " slab " << s;
     for (const std::vector<int>& phase : plan.phase) {
       std::vector<int> writer(nx, -1);
       for (int s : phase)
-        for (int start = width * s; start < std::min(width * (s + 1), nx); ++start)
+        for (int start = width * s - drift; start < std::min(width * (s + 1), nx) + drift; ++start)
           for (int k = 0; k < support; ++k) {
-            int& w = writer[(start + k) % nx];
+            int& w = writer[wrap_index(start + k, nx)];
             EXPECT_TRUE(w == -1 || w == s) << "nx " << nx << ": slabs " << w << " and " << s << " write column "
-                                           << (start + k) % nx << " in one phase";
+                                           << wrap_index(start + k, nx) << " in one phase";
             w = s;
           }
+    }
+    if (slabs >= 4) {
+      EXPECT_LE(plan.tail.size(), 2u) << "nx " << nx;
     }
   }
 }
 
 // Spreading many cells at once runs slabs of x in parallel; the field must equal a plain
-// node-by-node sum, also for slab counts that are odd (nx = 9, 10: three slabs, the last
-// one narrow), even with a narrow last slab (nx = 14) or a single slab (nx = 4), with nodes
-// across the periodic boundary.
-TEST(Spreading, ParallelSlabsEqualASerialSum) {
-  for (int nx : {4, 9, 10, 14, 16}) {
+// node-by-node sum, also for slab counts that are odd (nx = 9, 11: two or three slabs, the
+// last one narrow), with a narrow last slab (nx = 16), a single slab (nx = 4), with nodes
+// across the periodic boundary, and with nodes that have moved up to NodeOrder::max_drift
+// in each direction since they were sorted (spread from where they are now).
+namespace {
+
+void expect_slabs_equal_a_serial_sum(double drift) {
+  for (int nx : {4, 9, 11, 14, 16, 21}) {
     FluidConfig cfg;
     cfg.nx = nx;
     cfg.ny = 12;
     cfg.nz = 6;
     FluidLattice fluid(cfg);
     std::mt19937_64 rng(static_cast<unsigned>(nx));
-    std::uniform_real_distribution<double> px(-3.0, nx + 3.0), py(2.0, 9.0), pz(-2.0, 8.0), frc(-1.0, 1.0);
-    std::vector<std::vector<Vec3>> x(5), f(5);
+    std::uniform_real_distribution<double> px(-3.0, nx + 3.0), py(2.0, 9.0), pz(-2.0, 8.0), frc(-1.0, 1.0),
+        move(-drift, drift);
+    std::vector<std::vector<Vec3>> sorted_at(5), x(5), f(5);
     for (int c = 0; c < 5; ++c)
-      for (int i = 0; i < 40; ++i) {
-        x[c].emplace_back(px(rng), py(rng), pz(rng));
+      for (int i = 0; i < 200; ++i) {
+        sorted_at[c].emplace_back(px(rng), py(rng), pz(rng));
+        // Every fourth node moved by the whole drift along x, where it matters most.
+        const double dx = i % 4 == 0 ? (i % 8 == 0 ? drift : -drift) : move(rng);
+        x[c].push_back(sorted_at[c].back() + Vec3(dx, move(rng), move(rng)));
         f[c].emplace_back(frc(rng), frc(rng), frc(rng));
       }
-    spread_forces(KernelKind::Peskin4, x, f, fluid);
+    NodeOrder order;
+    sort_nodes(KernelKind::Peskin4, sorted_at, cfg.nx, cfg.ny, cfg.nz, order);
+    gather_nodes(x, f, order);
+    spread_forces(order, fluid);
     std::vector<double> expected(3 * fluid.node_count(), 0.0);
     for (int c = 0; c < 5; ++c)
-      for (int i = 0; i < 40; ++i) {
+      for (int i = 0; i < 200; ++i) {
         const KernelStencil s = make_stencil(KernelKind::Peskin4, x[c][i], cfg.nx, cfg.ny, cfg.nz);
         for (int a = 0; a < 4; ++a)
           for (int b = 0; b < 4; ++b)
@@ -187,8 +203,17 @@ TEST(Spreading, ParallelSlabsEqualASerialSum) {
                 expected[3 * fluid.index(s.x[a], s.y[b], s.z[d]) + k] += s.wx[a] * s.wy[b] * s.wz[d] * f[c][i][k];
       }
     for (std::size_t n = 0; n < fluid.node_count(); ++n)
-      for (int k = 0; k < 3; ++k) EXPECT_NEAR(fluid.force(k)[n], expected[3 * n + k], 1e-13) << "nx " << nx << " node " << n;
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(fluid.force(k)[n], expected[3 * n + k], 1e-12) << "nx " << nx << " node " << n << " drift " << drift;
   }
+}
+
+}  // namespace
+
+TEST(Spreading, ParallelSlabsEqualASerialSum) { expect_slabs_equal_a_serial_sum(0.0); }
+
+TEST(Spreading, ParallelSlabsEqualASerialSumAfterTheNodesHaveMoved) {
+  expect_slabs_equal_a_serial_sum(NodeOrder::max_drift);
 }
 
 TEST(NodeOrder, SortsStablyByTheSupportStartOnSmallAndLargeLattices) {
