@@ -25,6 +25,82 @@ void store4(double* p, v4d v) { std::memcpy(p, &v, sizeof v); }
 // True where the stencil's z nodes are four consecutive lattice nodes (no seam).
 bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.z[0] + 3; }
 
+// The 4-point stencils of up to kBlock sorted nodes, direction by direction and laid out by
+// node, so that their arithmetic (a floor and a square root per direction) runs across the
+// nodes as vectors; make_stencil's closed form.
+constexpr int kBlock = 8;
+struct Peskin4Block {
+  double w[3][4][kBlock];  // direction, weight, node
+  int first[3][kBlock];    // the support's first lattice index, unwrapped
+};
+
+void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
+  for (int d = 0; d < 3; ++d) {
+    double* const w0 = b.w[d][0];
+    double* const w1 = b.w[d][1];
+    double* const w2 = b.w[d][2];
+    double* const w3 = b.w[d][3];
+    int* const first = b.first[d];
+#pragma omp simd
+    for (int i = 0; i < n; ++i) {
+      const double r = p[i][d];
+      const double f = std::floor(r);
+      const double t = r - f;
+      const double q = std::sqrt(1.0 + 4.0 * t - 4.0 * t * t);
+      w0[i] = (3.0 - 2.0 * t - q) / 8.0;
+      w1[i] = (3.0 - 2.0 * t + q) / 8.0;
+      w2[i] = (1.0 + 2.0 * t + q) / 8.0;
+      w3[i] = (1.0 + 2.0 * t - q) / 8.0;
+      first[i] = static_cast<int>(f) - 1;
+    }
+  }
+}
+
+// Whether node i's support lies inside the lattice in every direction: no periodic wrap, no
+// wall, so its rows are plain offsets from its first node.
+bool interior(const Peskin4Block& b, int i, int nx, int ny, int nz) {
+  const int x = b.first[0][i], y = b.first[1][i], z = b.first[2][i];
+  return x >= 0 && x + 3 < nx && y >= 0 && y + 3 < ny && z >= 0 && z + 3 < nz;
+}
+
+void spread_interior(const Peskin4Block& b, int i, const Vec3& force, double* const f[3], int ny, int nz) {
+  const std::size_t first = lattice_index(b.first[0][i], b.first[1][i], b.first[2][i], ny, nz);
+  const std::size_t plane = static_cast<std::size_t>(ny) * nz;
+  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
+  const v4d fz0 = wz * force[0], fz1 = wz * force[1], fz2 = wz * force[2];
+  double* const f0 = f[0];
+  double* const f1 = f[1];
+  double* const f2 = f[2];
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 4; ++c) {
+      const double wab = b.w[0][a][i] * b.w[1][c][i];
+      const std::size_t at = first + a * plane + c * static_cast<std::size_t>(nz);
+      store4(f0 + at, load4(f0 + at) + wab * fz0);
+      store4(f1 + at, load4(f1 + at) + wab * fz1);
+      store4(f2 + at, load4(f2 + at) + wab * fz2);
+    }
+}
+
+Vec3 interpolate_interior(const Peskin4Block& b, int i, const double* const u[3], int ny, int nz) {
+  const std::size_t first = lattice_index(b.first[0][i], b.first[1][i], b.first[2][i], ny, nz);
+  const std::size_t plane = static_cast<std::size_t>(ny) * nz;
+  const double* const u0 = u[0];
+  const double* const u1 = u[1];
+  const double* const u2 = u[2];
+  v4d sum0 = {}, sum1 = {}, sum2 = {};
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 4; ++c) {
+      const double wab = b.w[0][a][i] * b.w[1][c][i];
+      const std::size_t at = first + a * plane + c * static_cast<std::size_t>(nz);
+      sum0 += wab * load4(u0 + at);
+      sum1 += wab * load4(u1 + at);
+      sum2 += wab * load4(u2 + at);
+    }
+  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
+  const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
+  return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
+}
+
 // Adds one node's force through its stencil.
 void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz) {
   if (contiguous_z4(s)) {
@@ -178,9 +254,25 @@ void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
   // drift_columns before it, so the slabs of one phase can spread concurrently
   // (slab_schedule). Within a slab the nodes keep their order,
   // so the sums do not depend on the thread count.
+  const int nx = fluid.nx();
   auto spread_slab = [&](int slab) {
-    for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g)
-      spread_one(order.stencil_of(g), order.force[g], f, ny, nz);
+    const std::size_t begin = order.slab_start[slab], end = order.slab_start[slab + 1];
+    if (order.kernel != KernelKind::Peskin4) {
+      for (std::size_t g = begin; g < end; ++g) spread_one(order.stencil_of(g), order.force[g], f, ny, nz);
+      return;
+    }
+    // The stencils several at a time (peskin4_block), the nodes still one by one in order.
+    Peskin4Block block;
+    for (std::size_t g0 = begin; g0 < end; g0 += kBlock) {
+      const int n = static_cast<int>(std::min<std::size_t>(kBlock, end - g0));
+      peskin4_block(order.position.data() + g0, n, block);
+      for (int i = 0; i < n; ++i) {
+        if (interior(block, i, nx, ny, nz))
+          spread_interior(block, i, order.force[g0 + i], f, ny, nz);
+        else
+          spread_one(order.stencil_of(g0 + i), order.force[g0 + i], f, ny, nz);
+      }
+    }
   };
   const SlabSchedule plan = slab_schedule(fluid.nx());
   for (const std::vector<int>& phase : plan.phase) {
@@ -225,6 +317,23 @@ Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny,
     const std::size_t n = lattice_index(i, j, k, ny, nz);
     return Vec3(u[0][n], u[1][n], u[2][n]);
   });
+}
+
+void interpolate_sorted(const NodeOrder& order, std::size_t begin, std::size_t end, const double* const u[3],
+                        Vec3* out) {
+  const int nx = order.nx, ny = order.ny, nz = order.nz;
+  if (order.kernel != KernelKind::Peskin4) {
+    for (std::size_t g = begin; g < end; ++g) out[g - begin] = interpolate_field(order.stencil_of(g), u, ny, nz);
+    return;
+  }
+  Peskin4Block block;
+  for (std::size_t g0 = begin; g0 < end; g0 += kBlock) {
+    const int n = static_cast<int>(std::min<std::size_t>(kBlock, end - g0));
+    peskin4_block(order.position.data() + g0, n, block);
+    for (int i = 0; i < n; ++i)
+      out[g0 + i - begin] = interior(block, i, nx, ny, nz) ? interpolate_interior(block, i, u, ny, nz)
+                                                           : interpolate_field(order.stencil_of(g0 + i), u, ny, nz);
+  }
 }
 
 Vec3 interpolate_velocity(KernelKind kernel, const FluidLattice& fluid, const Vec3& position) {

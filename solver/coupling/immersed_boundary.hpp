@@ -112,6 +112,11 @@ Vec3 interpolate(const KernelStencil& s, VelocityAt&& u_node) {
 // away from the periodic z seam reads its 16 rows as 4-wide vectors (z is contiguous).
 Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny, int nz);
 
+// The same at the sorted nodes [begin, end) of order, into out[0, end - begin): with the
+// 4-point kernel, their stencils are computed several at a time.
+void interpolate_sorted(const NodeOrder& order, std::size_t begin, std::size_t end, const double* const u[3],
+                        Vec3* out);
+
 // Velocity of the lattice fluid at a point (from the populations of the last step).
 Vec3 interpolate_velocity(KernelKind kernel, const FluidLattice& fluid, const Vec3& position);
 
