@@ -193,8 +193,11 @@ void sort_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positio
 void gather_nodes(const std::vector<std::vector<Vec3>>& positions, const std::vector<std::vector<Vec3>>& forces,
                   NodeOrder& order) {
   const std::size_t total = order.nodes.size();
-  if (order.cell_first.size() != positions.size() + 1 || order.cell_first.back() != total)
-    throw std::logic_error("gather_nodes: the cells are not those sorted");
+  const auto& first = order.cell_first;
+  bool same_cells = first.size() == positions.size() + 1 && first.back() == total;
+  for (std::size_t c = 0; same_cells && c < positions.size(); ++c)
+    same_cells = first[c + 1] - first[c] == positions[c].size() && forces[c].size() == positions[c].size();
+  if (!same_cells) throw std::logic_error("gather_nodes: the cells are not those sorted");
   order.position.resize(total);
   order.force.resize(total);
   const long count = static_cast<long>(total);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <random>
+#include <stdexcept>
 #include <utility>
 
 #include "solver/coupling/immersed_boundary.hpp"
@@ -304,4 +305,14 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
   // Both kinds of boundary were met.
   EXPECT_GT(walls, 20);
   EXPECT_GT(wraps, 50);
+}
+
+// A kept order serves only the cells it sorted: other cell sizes are refused.
+TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
+  std::vector<std::vector<Vec3>> x = {{Vec3(2, 3, 4), Vec3(5, 6, 7)}, {Vec3(8, 6, 4)}};
+  NodeOrder order;
+  sort_nodes(KernelKind::Peskin4, x, 12, 12, 12, order);
+  EXPECT_NO_THROW(gather_nodes(x, x, order));
+  std::vector<std::vector<Vec3>> moved = {{Vec3(2, 3, 4)}, {Vec3(8, 6, 4), Vec3(5, 6, 7)}};
+  EXPECT_THROW(gather_nodes(moved, moved, order), std::logic_error);
 }
