@@ -166,8 +166,9 @@ TEST(Spreading, SlabsOfOnePhaseNeverShareAColumn) {
 // Spreading many cells at once runs slabs of x in parallel; the field must equal a plain
 // node-by-node sum, also for slab counts that are odd (nx = 9, 11: two or three slabs, the
 // last one narrow), with a narrow last slab (nx = 16), a single slab (nx = 4), with nodes
-// across the periodic boundary, and with nodes that have moved up to NodeOrder::max_drift
-// in each direction since they were sorted (spread from where they are now).
+// across the periodic boundary, with runs of nodes that share their stencil's first node, and
+// with nodes that have moved up to NodeOrder::max_drift in each direction since they were
+// sorted (spread from where they are now).
 namespace {
 
 void expect_slabs_equal_a_serial_sum(double drift) {
@@ -181,13 +182,21 @@ void expect_slabs_equal_a_serial_sum(double drift) {
     std::uniform_real_distribution<double> px(-3.0, nx + 3.0), py(2.0, 9.0), pz(-2.0, 8.0), frc(-1.0, 1.0),
         move(-drift, drift);
     std::vector<std::vector<Vec3>> sorted_at(5), x(5), f(5);
+    const Vec3 nudge(0.01, 0.02, 0.03);
     for (int c = 0; c < 5; ++c)
       for (int i = 0; i < 200; ++i) {
+        f[c].emplace_back(frc(rng), frc(rng), frc(rng));
+        if (i % 5 == 4) {
+          // Every fifth node next to the one before: runs of nodes sharing their stencil's
+          // first node, which the spreading takes together.
+          sorted_at[c].push_back(sorted_at[c].back() + nudge);
+          x[c].push_back(x[c].back() + nudge);
+          continue;
+        }
         sorted_at[c].emplace_back(px(rng), py(rng), pz(rng));
         // Every fourth node moved by the whole drift along x, where it matters most.
         const double dx = i % 4 == 0 ? (i % 8 == 0 ? drift : -drift) : move(rng);
         x[c].push_back(sorted_at[c].back() + Vec3(dx, move(rng), move(rng)));
-        f[c].emplace_back(frc(rng), frc(rng), frc(rng));
       }
     NodeOrder order;
     sort_nodes(KernelKind::Peskin4, sorted_at, cfg.nx, cfg.ny, cfg.nz, order);
