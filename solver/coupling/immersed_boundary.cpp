@@ -35,6 +35,12 @@ struct Peskin4Block {
 };
 
 void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
+  // The coordinates first gathered into whole rows of kBlock (a short block repeats its last
+  // node), and the floor taken through an integer conversion: GCC 12 leaves a loop with
+  // std::floor scalar (it vectorises it only without trapping math).
+  alignas(64) double r[3][kBlock];
+  for (int i = 0; i < kBlock; ++i)
+    for (int d = 0; d < 3; ++d) r[d][i] = p[std::min(i, n - 1)][d];
   for (int d = 0; d < 3; ++d) {
     double* const w0 = b.w[d][0];
     double* const w1 = b.w[d][1];
@@ -42,16 +48,16 @@ void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
     double* const w3 = b.w[d][3];
     int* const first = b.first[d];
 #pragma omp simd
-    for (int i = 0; i < n; ++i) {
-      const double r = p[i][d];
-      const double f = std::floor(r);
-      const double t = r - f;
+    for (int i = 0; i < kBlock; ++i) {
+      const int truncated = static_cast<int>(r[d][i]);  // lattices are narrower than 2^15
+      const int floor_r = truncated - (r[d][i] < truncated);
+      const double t = r[d][i] - floor_r;
       const double q = std::sqrt(1.0 + 4.0 * t - 4.0 * t * t);
       w0[i] = (3.0 - 2.0 * t - q) / 8.0;
       w1[i] = (3.0 - 2.0 * t + q) / 8.0;
       w2[i] = (1.0 + 2.0 * t + q) / 8.0;
       w3[i] = (1.0 + 2.0 * t - q) / 8.0;
-      first[i] = static_cast<int>(f) - 1;
+      first[i] = floor_r - 1;
     }
   }
 }
