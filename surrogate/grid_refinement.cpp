@@ -26,8 +26,9 @@ std::vector<double> with_midpoints(const std::vector<double>& axis_values, bool 
 }  // namespace
 
 ParameterGrid refined(const ParameterGrid& grid) {
+  // The refinement is a grid over the axes (of a listed design too: its distinct values).
   return {with_midpoints(grid.phi, false), with_midpoints(grid.capillary_number, true),
-          with_midpoints(grid.viscosity_ratio, true)};
+          with_midpoints(grid.viscosity_ratio, true), {}};
 }
 
 }  // namespace rbcal::surrogate
