@@ -38,9 +38,16 @@ void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
   // The coordinates first gathered into whole rows of kBlock (a short block repeats its last
   // node), and the floor taken through an integer conversion: GCC 12 leaves a loop with
   // std::floor scalar (it vectorises it only without trapping math).
+  // A coordinate beyond +-2^20 (or NaN: a blown-up membrane) is taken as -2^20, which makes
+  // the node not interior(), so it goes through make_stencil as before; its integer
+  // conversion below stays defined.
+  constexpr double far = 1048576.0;
   alignas(64) double r[3][kBlock];
   for (int i = 0; i < kBlock; ++i)
-    for (int d = 0; d < 3; ++d) r[d][i] = p[std::min(i, n - 1)][d];
+    for (int d = 0; d < 3; ++d) {
+      const double x = p[std::min(i, n - 1)][d];
+      r[d][i] = x > -far && x < far ? x : -far;
+    }
   for (int d = 0; d < 3; ++d) {
     double* const w0 = b.w[d][0];
     double* const w1 = b.w[d][1];
@@ -49,7 +56,7 @@ void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
     int* const first = b.first[d];
 #pragma omp simd
     for (int i = 0; i < kBlock; ++i) {
-      const int truncated = static_cast<int>(r[d][i]);  // lattices are narrower than 2^15
+      const int truncated = static_cast<int>(r[d][i]);  // |r| <= 2^20
       const int floor_r = truncated - (r[d][i] < truncated);
       const double t = r[d][i] - floor_r;
       const double q = std::sqrt(1.0 + 4.0 * t - 4.0 * t * t);

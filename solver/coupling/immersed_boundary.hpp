@@ -19,7 +19,7 @@
 namespace rbcal::solver {
 
 // Adds each node's force (lattice units, force per node) to the lattice force field.
-// (order: from order_nodes, which carries the kernel.)
+// (order: from sort_nodes and gather_nodes, or order_nodes; it carries the kernel.)
 void spread_forces(const NodeOrder& order, FluidLattice& fluid);
 void spread_forces(KernelKind kernel, const std::vector<std::vector<Vec3>>& positions,
                    const std::vector<std::vector<Vec3>>& forces, FluidLattice& fluid);

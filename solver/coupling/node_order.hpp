@@ -45,9 +45,11 @@ struct NodeOrder {
   KernelKind kernel = KernelKind::Peskin4;
   int nx = 0, ny = 0, nz = 0;
   // The kernel stencil at position[g], for the spreading and again for the interpolation that
-  // follows the fluid step (the nodes have not moved). Computed where it is used: stored,
-  // the stencils (128 bytes a node) were written once and read twice per membrane update,
-  // and that traffic cost more than computing them (three square roots) each time.
+  // follows the fluid step (the nodes have not moved): for the 2- and 3-point kernels, and
+  // for 4-point stencils that meet a wall or a periodic seam (the others are computed eight
+  // at a time where they are used). Computed, not stored: stored, the stencils (128 bytes a
+  // node) were written once and read twice per membrane update, and that traffic cost more
+  // than computing them (three square roots) each time.
   KernelStencil stencil_of(std::size_t g) const { return make_stencil(kernel, position[g], nx, ny, nz); }
   std::vector<std::size_t> slab_start;                         // slab s is [slab_start[s], slab_start[s + 1])
   // Scratch: each node's key and (cell, node) in mesh order, the sort, the first node of

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -15,6 +16,10 @@
 namespace rbcal::solver {
 
 namespace {
+
+// For the largest-displacement and fastest-node maxima: std::max drops a NaN, which would let
+// a node gone NaN pass both checks unnoticed.
+double nan_as_infinite(double x) { return std::isnan(x) ? std::numeric_limits<double>::infinity() : x; }
 
 FluidConfig fluid_config(const LatticeUnits& u, bool quiescent, bool single_precision) {
   FluidConfig f;
@@ -139,7 +144,7 @@ bool ShearFlowSimulation::update_viscosity() {
 #pragma omp parallel for schedule(static) reduction(max : largest)
     for (std::size_t i = 0; i < x_.size(); ++i)
       for (std::size_t m = 0; m < x_[i].size(); ++m)
-        largest = std::max(largest, (x_[i][m] - x_indicator_[i][m]).squaredNorm());
+        largest = std::max(largest, nan_as_infinite((x_[i][m] - x_indicator_[i][m]).squaredNorm()));
     if (largest <= tolerance * tolerance) return false;
   }
   x_indicator_ = x_;
@@ -218,7 +223,7 @@ void ShearFlowSimulation::move_cells(double dt) {
       }
       // The speed from the register, not read back from v_ (written in mesh order, a
       // scattered store that the read-back had to wait for).
-      fastest = std::max(fastest, velocity.squaredNorm());
+      fastest = std::max(fastest, nan_as_infinite(velocity.squaredNorm()));
       v_[cell][m] = velocity;
     }
   }
@@ -377,7 +382,15 @@ int ShearFlowSimulation::restore_checkpoint(const std::string& path, bool any_co
   }
   order_from_indicator_ = false;
   if (fluid_.steps_done() % case_.coupling_interval != 0 || saved_interval != case_.coupling_interval) {
-    order_membrane_nodes(true);
+    if (fluid_.steps_done() % saved_interval != 0) {
+      // Inside the saved run's interval: the nodes have not moved since its membrane update,
+      // which kept them within the tolerance of x_indicator_; sorted as that run sorted them.
+      order_membrane_nodes(true);
+    } else {
+      // At the end of its interval they have moved since, possibly past the tolerance: sorted
+      // where they stand (a run resumed under another interval, not bit for bit anyway).
+      order_nodes(case_.kernel, x_, f_, units_.nx, units_.ny, units_.nz, order_);
+    }
     fluid_.clear_force();
     spread_forces(order_, fluid_);
   }

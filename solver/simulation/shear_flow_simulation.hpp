@@ -163,7 +163,7 @@ class ShearFlowSimulation {
   mutable StepTimings timings_;
   std::unique_ptr<DeviceStepper> device_;
   mutable bool cells_stale_ = false, fluid_stale_ = false;
-  NodeOrder order_;  // of the membrane nodes at the current positions (immersed_boundary.hpp)
+  NodeOrder order_;  // of the membrane nodes, sorted at x_indicator_, gathered at x_ (node_order.hpp)
   bool order_from_indicator_ = false;  // order_ sorted from the current x_indicator_
 };
 

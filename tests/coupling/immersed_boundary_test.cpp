@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <utility>
@@ -164,8 +165,8 @@ TEST(Spreading, SlabsOfOnePhaseNeverShareAColumn) {
 }
 
 // Spreading many cells at once runs slabs of x in parallel; the field must equal a plain
-// node-by-node sum, also for slab counts that are odd (nx = 9, 11: two or three slabs, the
-// last one narrow), with a narrow last slab (nx = 16), a single slab (nx = 4), with nodes
+// node-by-node sum, also for slab counts that are odd (nx = 9, 11, 21: three or six slabs,
+// the last one narrow), with a narrow last slab (nx = 14), a single slab (nx = 4), with nodes
 // across the periodic boundary, with runs of nodes that share their stencil's first node, and
 // with nodes that have moved up to NodeOrder::max_drift in each direction since they were
 // sorted (spread from where they are now).
@@ -308,6 +309,8 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
       return Vec3(u[0][n], u[1][n], u[2][n]);
     });
     EXPECT_NEAR((sampled[g] - expected).norm(), 0.0, 1e-14) << "node " << g;
+    // And to the last bit what the single node's own path gives.
+    EXPECT_EQ(sampled[g], interpolate_field(s, u, ny, nz)) << "node " << g;
     walls += order.position[g].y() < 1.0 || order.position[g].y() >= ny - 2.0;
     wraps += s.x[3] != s.x[0] + 3 || s.z[3] != s.z[0] + 3;
   }
@@ -324,4 +327,55 @@ TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
   EXPECT_NO_THROW(gather_nodes(x, x, order));
   std::vector<std::vector<Vec3>> moved = {{Vec3(2, 3, 4)}, {Vec3(8, 6, 4), Vec3(5, 6, 7)}};
   EXPECT_THROW(gather_nodes(moved, moved, order), std::logic_error);
+}
+
+// The spreading of sorted nodes inside the lattice (stencils eight at a time, runs of nodes
+// that share a first node taken together) adds, to the last bit, what each node alone adds
+// through its own stencil (make_stencil), in the same order: slab by slab as the schedule
+// runs them, node by node within a slab. Nodes on lattice coordinates (zero weights) and in
+// runs of four included.
+TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
+  const int nx = 24, ny = 16, nz = 12;
+  FluidConfig cfg;
+  cfg.nx = nx;
+  cfg.ny = ny;
+  cfg.nz = nz;
+  FluidLattice fluid(cfg);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> px(1.5, nx - 3.5), py(1.5, ny - 3.5), pz(1.5, nz - 3.5), frc(-1.0, 1.0);
+  std::vector<std::vector<Vec3>> x(3), f(3);
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 300; ++i) {
+      f[c].emplace_back(frc(rng), frc(rng), frc(rng));
+      if (i % 7 == 3) x[c].emplace_back(std::floor(px(rng)), std::floor(py(rng)), std::floor(pz(rng)));
+      else if (i % 7 >= 4) x[c].push_back(x[c].back() + Vec3(0.01, 0.02, 0.03));  // a run
+      else x[c].emplace_back(px(rng), py(rng), pz(rng));
+    }
+  NodeOrder order;
+  order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
+  spread_forces(order, fluid);
+  std::vector<double> expected(3 * fluid.node_count(), 0.0);
+  auto add_slab = [&](int slab) {
+    for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g) {
+      const KernelStencil st = make_stencil(KernelKind::Peskin4, order.position[g], nx, ny, nz);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+          const double wab = st.wx[a] * st.wy[b];
+          for (int k = 0; k < 4; ++k)
+            for (int d = 0; d < 3; ++d) {
+              const double fz = st.wz[k] * order.force[g][d];
+              double& at = expected[d * fluid.node_count() + fluid.index(st.x[a], st.y[b], st.z[k])];
+              at = at + wab * fz;
+            }
+        }
+    }
+  };
+  const SlabSchedule plan = slab_schedule(nx);
+  for (const std::vector<int>& phase : plan.phase)
+    for (int slab : phase) add_slab(slab);
+  for (int slab : plan.tail) add_slab(slab);
+  std::size_t differing = 0;
+  for (int d = 0; d < 3; ++d)
+    for (std::size_t n = 0; n < fluid.node_count(); ++n) differing += fluid.force(d)[n] != expected[d * fluid.node_count() + n];
+  EXPECT_EQ(differing, 0u);
 }
