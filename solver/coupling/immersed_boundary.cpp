@@ -27,7 +27,7 @@ bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.
 
 // The 4-point stencils of up to kBlock sorted nodes, direction by direction and laid out by
 // node, so that their arithmetic (a floor and a square root per direction) runs across the
-// nodes as vectors; make_stencil's closed form.
+// nodes as vectors; make_stencil's weights (peskin4_weights).
 constexpr int kBlock = 8;
 struct Peskin4Block {
   double w[3][4][kBlock];  // direction, weight, node
@@ -58,12 +58,7 @@ void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
     for (int i = 0; i < kBlock; ++i) {
       const int truncated = static_cast<int>(r[d][i]);  // |r| <= 2^20
       const int floor_r = truncated - (r[d][i] < truncated);
-      const double t = r[d][i] - floor_r;
-      const double q = std::sqrt(1.0 + 4.0 * t - 4.0 * t * t);
-      w0[i] = (3.0 - 2.0 * t - q) / 8.0;
-      w1[i] = (3.0 - 2.0 * t + q) / 8.0;
-      w2[i] = (1.0 + 2.0 * t + q) / 8.0;
-      w3[i] = (1.0 + 2.0 * t - q) / 8.0;
+      peskin4_weights(r[d][i] - floor_r, w0[i], w1[i], w2[i], w3[i]);
       first[i] = floor_r - 1;
     }
   }

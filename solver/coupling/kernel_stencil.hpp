@@ -41,10 +41,20 @@ RBCAL_HD inline int support_start(KernelKind kernel, double r) {
   return support == 3 ? static_cast<int>(lround(r)) - 1 : static_cast<int>(floor(r)) - (support - 1) / 2;
 }
 
+// The four Peskin weights at fractional position t in [0, 1): they share one square root
+// (substitute t + 1, t, 1 - t, 2 - t into the kernel), which makes this several times
+// cheaper than four kernel evaluations. (Also run eight nodes at a time, as vectors, by the
+// CPU's spreading and interpolation.)
+RBCAL_HD inline void peskin4_weights(double t, double& w0, double& w1, double& w2, double& w3) {
+  const double q = sqrt(1.0 + 4.0 * t - 4.0 * t * t);
+  w0 = (3.0 - 2.0 * t - q) / 8.0;
+  w1 = (3.0 - 2.0 * t + q) / 8.0;
+  w2 = (1.0 + 2.0 * t + q) / 8.0;
+  w3 = (1.0 + 2.0 * t - q) / 8.0;
+}
+
 // First node of the support and the weights along one direction. The 2- and 4-point
-// weights come in closed form from the fractional position: the four Peskin weights
-// share one square root (substitute r + 1, r, 1 - r, 2 - r into the kernel), which
-// makes this several times cheaper than four kernel evaluations.
+// weights come in closed form from the fractional position.
 RBCAL_HD inline void kernel_weights_1d(KernelKind kernel, double r, int support, int& first, std::array<double, 4>& w) {
   const double f = floor(r);
   const double t = r - f;  // in [0, 1)
@@ -56,11 +66,7 @@ RBCAL_HD inline void kernel_weights_1d(KernelKind kernel, double r, int support,
       return;
     case KernelKind::Peskin4: {
       first = static_cast<int>(f) - 1;
-      const double q = sqrt(1.0 + 4.0 * t - 4.0 * t * t);
-      w[0] = (3.0 - 2.0 * t - q) / 8.0;
-      w[1] = (3.0 - 2.0 * t + q) / 8.0;
-      w[2] = (1.0 + 2.0 * t + q) / 8.0;
-      w[3] = (1.0 + 2.0 * t - q) / 8.0;
+      peskin4_weights(t, w[0], w[1], w[2], w[3]);
       return;
     }
     case KernelKind::Roma3:
