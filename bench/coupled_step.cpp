@@ -16,9 +16,11 @@ namespace rbcal::bench {
 using formats::printf_string;
 
 CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
-                                     solver::Backend backend, int rounds) {
+                                     solver::Backend backend, int rounds, const std::string& checkpoint) {
   if (steps < 1) throw std::invalid_argument("coupled-step bench: steps must be >= 1");
   solver::ShearFlowSimulation sim(c, backend);
+  if (!checkpoint.empty()) sim.restore_checkpoint(checkpoint, false);
+  const double start_strain = sim.strain();
   solver::DeviceStepper* device = sim.device();
   if (device) device->set_timing(true);
   // NaNs run at their own speed: the guards after every step, outside the timed parts.
@@ -41,6 +43,7 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
   for (const auto& x : sim.positions()) out.membrane_nodes += x.size();
   out.coupling_interval = c.coupling_interval;
   out.strain_per_step = sim.units().shear_rate;
+  out.start_strain = start_strain;
   // One round: `steps` coupled steps, part by part, then (CPU) as many plain fluid steps of
   // the same lattice, so that both see the same state of a noisy host.
   std::unique_ptr<solver::FluidLattice> plain;
@@ -122,6 +125,7 @@ std::string CoupledStepTimings::brief_report() const {
   std::string s =
       printf_string("  lattice %d x %d x %d, %zu cells, %zu membrane nodes, %lld timed steps x %d rounds, coupling interval %d\n",
                     nx, ny, nz, cells, membrane_nodes, static_cast<long long>(steps), rounds, coupling_interval);
+  if (start_strain > 0) s += printf_string("  from a checkpoint at strain %.3f\n", start_strain);
   s += printf_string("  fluid update (+ velocity field) %9.3f ms/step\n", fluid * 1e3);
   s += printf_string("  membrane forces              %9.3f ms/step\n", membrane_forces * 1e3);
   s += printf_string("  node ordering                %9.3f ms/step (sorted in %lld of the steps)\n", ordering * 1e3,
@@ -163,6 +167,7 @@ nlohmann::json CoupledStepTimings::to_json() const {
           {"indicator_builds", indicator_builds},
           {"ordering_sorts", ordering_sorts},
           {"coupling_interval", coupling_interval},
+          {"start_strain", start_strain},
           {"plain_fluid_seconds_per_step", plain_fluid},
           {"free_running_seconds_per_step", free_running},
           {"device", device},

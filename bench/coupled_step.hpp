@@ -29,6 +29,7 @@ struct CoupledStepTimings {
   std::string device;
   double copy_bandwidth = 0;
   double strain_per_step = 0;  // gamma_dot in lattice units
+  double start_strain = 0;     // where the timed steps began (a checkpoint's strain; else 0)
   // Rounds of `steps` coupled and (CPU) `steps` plain fluid steps, alternating; the parts above
   // are medians over rounds, and so are the whole step and the ratio (of each round's own).
   int rounds = 1;
@@ -44,8 +45,11 @@ struct CoupledStepTimings {
 // Two warm-up steps, then `rounds` rounds of `steps` timed steps of the case and (CPU) as
 // many plain fluid steps. Throws std::runtime_error naming the case when it is not stable. On
 // the device backend the parts are timed with a synchronisation after each, then the step
-// again without, and the guards run once at the end.
+// again without, and the guards run once at the end. A checkpoint of the case (rbcal simulate
+// --max-steps writes one) is the state to start from: a run's cells, which shear carries
+// out of the box in x (positions are unwrapped), where a fresh start has them all inside.
 CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std::string& case_name, int steps,
-                                     solver::Backend backend = solver::Backend::Cpu, int rounds = 1);
+                                     solver::Backend backend = solver::Backend::Cpu, int rounds = 1,
+                                     const std::string& checkpoint = "");
 
 }  // namespace rbcal::bench

@@ -39,6 +39,7 @@ struct BenchOptions {
   std::string json_path;
   std::string case_path;  // case mode: time the parts of a coupled step
   int case_steps = 20;
+  std::string case_checkpoint;  // case mode: the state to start from
   std::string backend = "cpu";
   std::string precision = "double";
   int prefetch = solver::FluidConfig{}.prefetch_distance;  // fluid mode: populations ahead
@@ -83,7 +84,8 @@ void run_calibration_bench(const BenchOptions& o) {
 
 void run_case_bench(const BenchOptions& o) {
   const bench::CoupledStepTimings t = bench::time_coupled_step(solver::read_case(o.case_path), o.case_path, o.case_steps,
-                                                               backend_from_option(o.backend), o.rounds);
+                                                               backend_from_option(o.backend), o.rounds,
+                                                               o.case_checkpoint);
   std::printf("rbcal bench --case %s (rbcal %s, %d threads, host %s)\n  %s\n%s", o.case_path.c_str(),
               build_info::git_revision, omp_get_max_threads(), formats::host_name().c_str(),
               bench::describe_host().line().c_str(), t.brief_report().c_str());
@@ -193,6 +195,10 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--case-steps", opts->case_steps, "Case mode: timed steps (after 2 warm-up steps)")
       ->capture_default_str();
+  cmd->add_option("--case-checkpoint", opts->case_checkpoint,
+                  "Case mode: start from this checkpoint of the case (written by rbcal simulate CASE --max-steps N): "
+                  "the cells where a run has carried them, most of them sheared out of the box in x")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--calibration-points", opts->calibration_points,
                   "Calibration mode: time rbcal calibrate (direct, then all methods) on samples of these sizes, e.g. 28,100,500,2000,10000")
       ->delimiter(',')
@@ -215,6 +221,8 @@ void add_bench_command(CLI::App& app) {
   cmd->callback([opts] {
     if (opts->backend == "device" && opts->case_path.empty())
       throw CLI::ValidationError("--backend device", "times a case: give --case FILE");
+    if (!opts->case_checkpoint.empty() && opts->case_path.empty())
+      throw CLI::ValidationError("--case-checkpoint", "is a state of a case: give its --case FILE too");
     run_bench(*opts);
   });
 }

@@ -27,27 +27,28 @@ bool contiguous_z4(const KernelStencil& s) { return s.count == 4 && s.z[3] == s.
 
 // The 4-point stencils of up to kBlock sorted nodes, direction by direction and laid out by
 // node, so that their arithmetic (a floor and a square root per direction) runs across the
-// nodes as vectors; make_stencil's weights (peskin4_weights).
+// nodes as vectors; make_stencil's weights (peskin4_weights) and its wrapped indices.
 constexpr int kBlock = 8;
 struct Peskin4Block {
   double w[3][4][kBlock];  // direction, weight, node
-  int first[3][kBlock];    // the support's first lattice index, unwrapped
+  int first[3][kBlock];    // the support's first lattice index: wrapped into the box in x and z
 };
 
-void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
+void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   // The coordinates first gathered into whole rows of kBlock (a short block repeats its last
   // node), and the floor taken through an integer conversion: GCC 12 leaves a loop with
   // std::floor scalar (it vectorises it only without trapping math).
-  // A coordinate beyond +-2^20 (or NaN: a blown-up membrane) is taken as -2^20, which makes
-  // the node not interior(), so it goes through make_stencil as before; its integer
-  // conversion below stays defined.
+  // A node with a coordinate beyond +-2^20 (or NaN: a blown-up membrane) is taken as lying
+  // at -2^20 in every direction, which puts its support below the wall y = 0, so it is not
+  // on_fast_path() and goes through make_stencil as before; its integer conversions below
+  // stay defined.
   constexpr double far = 1048576.0;
   alignas(64) double r[3][kBlock];
-  for (int i = 0; i < kBlock; ++i)
-    for (int d = 0; d < 3; ++d) {
-      const double x = p[std::min(i, n - 1)][d];
-      r[d][i] = x > -far && x < far ? x : -far;
-    }
+  for (int i = 0; i < kBlock; ++i) {
+    const Vec3& x = p[std::min(i, n - 1)];
+    const bool near = x[0] > -far && x[0] < far && x[1] > -far && x[1] < far && x[2] > -far && x[2] < far;
+    for (int d = 0; d < 3; ++d) r[d][i] = near ? x[d] : -far;
+  }
   for (int d = 0; d < 3; ++d) {
     double* const w0 = b.w[d][0];
     double* const w1 = b.w[d][1];
@@ -62,13 +63,34 @@ void peskin4_block(const Vec3* p, int n, Peskin4Block& b) {
       first[i] = floor_r - 1;
     }
   }
+  // Cells leave the box in x as they are sheared (positions are unwrapped), so most nodes
+  // of a long run lie outside it: their first index is wrapped in x and z as make_stencil
+  // wraps it, f - m floor(f / m). The floor as above; exact, as f / m is either an integer,
+  // which the division gives exactly, or at least 1 / m from one.
+  for (const auto& [d, m] : {std::pair{0, nx}, std::pair{2, nz}}) {
+    int* const first = b.first[d];
+    const double period = m;
+#pragma omp simd
+    for (int i = 0; i < kBlock; ++i) {
+      const double q = first[i] / period;
+      const int q_truncated = static_cast<int>(q);
+      first[i] -= m * (q_truncated - (q < q_truncated));
+    }
+  }
 }
 
-// Whether node i's support lies inside the lattice in every direction: no periodic wrap, no
-// wall, so its rows are plain offsets from its first node.
-bool interior(const Peskin4Block& b, int i, int nx, int ny, int nz) {
+// Whether node i's stencil is one of plain rows: z contiguous (no periodic seam in z) and
+// no wall in y; x may wrap (the row planes are taken modulo nx: x_planes). Only lattices at
+// least a support wide in x wrap each plane at most once.
+bool on_fast_path(const Peskin4Block& b, int i, int nx, int ny, int nz) {
   const int x = b.first[0][i], y = b.first[1][i], z = b.first[2][i];
-  return x >= 0 && x + 3 < nx && y >= 0 && y + 3 < ny && z >= 0 && z + 3 < nz;
+  return nx >= 4 && x >= 0 && x < nx && y >= 0 && y + 3 < ny && z >= 0 && z + 3 < nz;
+}
+
+// The offsets of the stencil's four x planes (plane = ny nz nodes), wrapped.
+void x_planes(const Peskin4Block& b, int i, int nx, std::size_t plane, std::size_t out[4]) {
+  const int x = b.first[0][i];
+  for (int a = 0; a < 4; ++a) out[a] = static_cast<std::size_t>(x + a < nx ? x + a : x + a - nx) * plane;
 }
 
 // Sorted nodes often share their first lattice node with the one before (about 30 % of them
@@ -85,13 +107,14 @@ int run_length(const Peskin4Block& b, int i, int n) {
   return j - i;
 }
 
-// Adds the forces of nodes i, ..., i + N - 1 of the block (one run, inside the lattice) row by
+// Adds the forces of nodes i, ..., i + N - 1 of the block (one run on the fast path) row by
 // row: each row gets the nodes' contributions one after the other, as N single nodes would
 // give them, so the sums are the same to the last bit.
 template <int N>
-void spread_interior(const Peskin4Block& b, int i, const Vec3* force, double* const f[3], int ny, int nz) {
-  const std::size_t first = lattice_index(b.first[0][i], b.first[1][i], b.first[2][i], ny, nz);
-  const std::size_t plane = static_cast<std::size_t>(ny) * nz;
+void spread_rows(const Peskin4Block& b, int i, const Vec3* force, double* const f[3], int nx, int ny, int nz) {
+  std::size_t planes[4];
+  x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, planes);
+  const std::size_t yz = static_cast<std::size_t>(b.first[1][i]) * nz + b.first[2][i];
   v4d fz[N][3];
   for (int n = 0; n < N; ++n) {
     const v4d wz = {b.w[2][0][i + n], b.w[2][1][i + n], b.w[2][2][i + n], b.w[2][3][i + n]};
@@ -102,7 +125,7 @@ void spread_interior(const Peskin4Block& b, int i, const Vec3* force, double* co
   double* const f2 = f[2];
   for (int a = 0; a < 4; ++a)
     for (int c = 0; c < 4; ++c) {
-      const std::size_t at = first + a * plane + c * static_cast<std::size_t>(nz);
+      const std::size_t at = planes[a] + yz + c * static_cast<std::size_t>(nz);
       v4d r0 = load4(f0 + at), r1 = load4(f1 + at), r2 = load4(f2 + at);
       for (int n = 0; n < N; ++n) {
         const double wab = b.w[0][a][i + n] * b.w[1][c][i + n];
@@ -116,9 +139,10 @@ void spread_interior(const Peskin4Block& b, int i, const Vec3* force, double* co
     }
 }
 
-Vec3 interpolate_interior(const Peskin4Block& b, int i, const double* const u[3], int ny, int nz) {
-  const std::size_t first = lattice_index(b.first[0][i], b.first[1][i], b.first[2][i], ny, nz);
-  const std::size_t plane = static_cast<std::size_t>(ny) * nz;
+Vec3 interpolate_rows(const Peskin4Block& b, int i, const double* const u[3], int nx, int ny, int nz) {
+  std::size_t planes[4];
+  x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, planes);
+  const std::size_t yz = static_cast<std::size_t>(b.first[1][i]) * nz + b.first[2][i];
   const double* const u0 = u[0];
   const double* const u1 = u[1];
   const double* const u2 = u[2];
@@ -126,7 +150,7 @@ Vec3 interpolate_interior(const Peskin4Block& b, int i, const double* const u[3]
   for (int a = 0; a < 4; ++a)
     for (int c = 0; c < 4; ++c) {
       const double wab = b.w[0][a][i] * b.w[1][c][i];
-      const std::size_t at = first + a * plane + c * static_cast<std::size_t>(nz);
+      const std::size_t at = planes[a] + yz + c * static_cast<std::size_t>(nz);
       sum0 += wab * load4(u0 + at);
       sum1 += wab * load4(u1 + at);
       sum2 += wab * load4(u2 + at);
@@ -182,18 +206,18 @@ void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
     Peskin4Block block;
     for (std::size_t g0 = begin; g0 < end; g0 += kBlock) {
       const int n = static_cast<int>(std::min<std::size_t>(kBlock, end - g0));
-      peskin4_block(order.position.data() + g0, n, block);
+      peskin4_block(order.position.data() + g0, n, nx, nz, block);
       for (int i = 0; i < n;) {
-        if (!interior(block, i, nx, ny, nz)) {
+        if (!on_fast_path(block, i, nx, ny, nz)) {
           spread_one(order.stencil_of(g0 + i), order.force[g0 + i], f, ny, nz);
           ++i;
           continue;
         }
         const int run = run_length(block, i, n);
         const Vec3* const force = order.force.data() + g0 + i;
-        if (run == 1) spread_interior<1>(block, i, force, f, ny, nz);
-        else if (run == 2) spread_interior<2>(block, i, force, f, ny, nz);
-        else spread_interior<3>(block, i, force, f, ny, nz);
+        if (run == 1) spread_rows<1>(block, i, force, f, nx, ny, nz);
+        else if (run == 2) spread_rows<2>(block, i, force, f, nx, ny, nz);
+        else spread_rows<3>(block, i, force, f, nx, ny, nz);
         i += run;
       }
     }
@@ -253,9 +277,9 @@ void interpolate_sorted(const NodeOrder& order, std::size_t begin, std::size_t e
   Peskin4Block block;
   for (std::size_t g0 = begin; g0 < end; g0 += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, end - g0));
-    peskin4_block(order.position.data() + g0, n, block);
+    peskin4_block(order.position.data() + g0, n, nx, nz, block);
     for (int i = 0; i < n; ++i)
-      out[g0 + i - begin] = interior(block, i, nx, ny, nz) ? interpolate_interior(block, i, u, ny, nz)
+      out[g0 + i - begin] = on_fast_path(block, i, nx, ny, nz) ? interpolate_rows(block, i, u, nx, ny, nz)
                                                            : interpolate_field(order.stencil_of(g0 + i), u, ny, nz);
   }
 }

@@ -278,9 +278,11 @@ TEST(NodeOrder, SortsStablyByTheSupportStartOnSmallAndLargeLattices) {
 }
 
 // The interpolation at sorted nodes computes their 4-point stencils several at a time, with
-// a plain path for supports inside the lattice; it must give each node what its own stencil
-// gives, also next to the walls (weights renormalised), across the periodic x and z
-// boundaries, and for a last block shorter than the others.
+// a plain path for supports of whole z rows away from the walls; it must give each node what
+// its own stencil gives, also next to the walls (weights renormalised), across the periodic x
+// and z boundaries, for nodes several boxes away in x and z (a run's positions are unwrapped:
+// shear carries cells out of the box), supports starting exactly on a multiple of the box
+// (the wrap's division is exact there), and for a last block shorter than the others.
 TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
   const int nx = 20, ny = 16, nz = 12;
   const std::size_t nodes = static_cast<std::size_t>(nx) * ny * nz;
@@ -290,18 +292,26 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
   for (double& v : field) v = value(rng);
   const double* const u[3] = {field.data(), field.data() + nodes, field.data() + 2 * nodes};
   std::uniform_real_distribution<double> px(-3.0, nx + 3.0), py(0.0, ny - 1.0), pz(-3.0, nz + 3.0);
-  std::vector<std::vector<Vec3>> x(2), f(2);
+  std::uniform_int_distribution<int> boxes(-5, 5);
+  std::vector<std::vector<Vec3>> x(3), f(3);
   for (int c = 0; c < 2; ++c)
     for (int i = 0; i < 333; ++i) {
       x[c].emplace_back(px(rng), py(rng), pz(rng));
+      // Every third node of the second cell several boxes away in x and z.
+      if (c == 1 && i % 3 == 0) x[c].back() += Vec3(boxes(rng) * nx, 0.0, boxes(rng) * nz);
       f[c].emplace_back(0.0, 0.0, 0.0);
     }
+  // Supports starting on k nx and k nz (the first node one below the node's floor).
+  for (int k = -4; k <= 4; ++k) {
+    x[2].emplace_back(k * nx + 1.25, py(rng), k * nz + 1.75);
+    f[2].emplace_back(0.0, 0.0, 0.0);
+  }
   NodeOrder order;
   order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
   const std::size_t total = order.nodes.size();
   std::vector<Vec3> sampled(total);
   interpolate_sorted(order, 0, total, u, sampled.data());
-  int walls = 0, wraps = 0;
+  int walls = 0, wraps = 0, away = 0;
   for (std::size_t g = 0; g < total; ++g) {
     const KernelStencil s = make_stencil(KernelKind::Peskin4, order.position[g], nx, ny, nz);
     const Vec3 expected = interpolate(s, [&](int i, int j, int k) {
@@ -313,10 +323,12 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
     EXPECT_EQ(sampled[g], interpolate_field(s, u, ny, nz)) << "node " << g;
     walls += order.position[g].y() < 1.0 || order.position[g].y() >= ny - 2.0;
     wraps += s.x[3] != s.x[0] + 3 || s.z[3] != s.z[0] + 3;
+    away += order.position[g].x() < -nx || order.position[g].x() >= 2 * nx;
   }
-  // Both kinds of boundary were met.
+  // Both kinds of boundary were met, and nodes boxes away.
   EXPECT_GT(walls, 20);
   EXPECT_GT(wraps, 50);
+  EXPECT_GT(away, 50);
 }
 
 // A kept order serves only the cells it sorted: other cell sizes are refused.
@@ -329,11 +341,11 @@ TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
   EXPECT_THROW(gather_nodes(moved, moved, order), std::logic_error);
 }
 
-// The spreading of sorted nodes inside the lattice (stencils eight at a time, runs of nodes
-// that share a first node taken together) adds, to the last bit, what each node alone adds
-// through its own stencil (make_stencil), in the same order: slab by slab as the schedule
-// runs them, node by node within a slab. Nodes on lattice coordinates (zero weights) and in
-// runs of four included.
+// The spreading of sorted nodes (stencils eight at a time, runs of nodes that share a first
+// node taken together) adds, to the last bit, what each node alone adds through its own
+// stencil (make_stencil), in the same order: slab by slab as the schedule runs them, node by
+// node within a slab. Nodes on lattice coordinates (zero weights), in runs of four, across
+// the periodic x boundary and whole boxes away in x (unwrapped positions) included.
 TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   const int nx = 24, ny = 16, nz = 12;
   FluidConfig cfg;
@@ -342,7 +354,8 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   cfg.nz = nz;
   FluidLattice fluid(cfg);
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> px(1.5, nx - 3.5), py(1.5, ny - 3.5), pz(1.5, nz - 3.5), frc(-1.0, 1.0);
+  std::uniform_real_distribution<double> px(0.0, nx), py(1.5, ny - 3.5), pz(1.5, nz - 3.5), frc(-1.0, 1.0);
+  std::uniform_int_distribution<int> boxes(-3, 3);
   std::vector<std::vector<Vec3>> x(3), f(3);
   for (int c = 0; c < 3; ++c)
     for (int i = 0; i < 300; ++i) {
@@ -350,6 +363,7 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
       if (i % 7 == 3) x[c].emplace_back(std::floor(px(rng)), std::floor(py(rng)), std::floor(pz(rng)));
       else if (i % 7 >= 4) x[c].push_back(x[c].back() + Vec3(0.01, 0.02, 0.03));  // a run
       else x[c].emplace_back(px(rng), py(rng), pz(rng));
+      if (c == 2 && i % 7 < 3) x[c].back().x() += boxes(rng) * nx;  // whole boxes away
     }
   NodeOrder order;
   order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
