@@ -46,8 +46,13 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   alignas(64) double r[3][kBlock];
   for (int i = 0; i < kBlock; ++i) {
     const Vec3& x = p[std::min(i, n - 1)];
-    const bool near = x[0] > -far && x[0] < far && x[1] > -far && x[1] < far && x[2] > -far && x[2] < far;
-    for (int d = 0; d < 3; ++d) r[d][i] = near ? x[d] : -far;
+    bool near = true;
+    for (int d = 0; d < 3; ++d) {
+      const bool in_range = x[d] > -far && x[d] < far;  // false for NaN
+      near &= in_range;
+      r[d][i] = in_range ? x[d] : -far;
+    }
+    if (!near) r[1][i] = -far;
   }
   for (int d = 0; d < 3; ++d) {
     double* const w0 = b.w[d][0];
@@ -65,16 +70,18 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   }
   // Cells leave the box in x as they are sheared (positions are unwrapped), so most nodes
   // of a long run lie outside it: their first index is wrapped in x and z as make_stencil
-  // wraps it, f - m floor(f / m). The floor as above; exact, as f / m is either an integer,
-  // which the division gives exactly, or at least 1 / m from one.
+  // wraps it, into [0, m). The quotient through a multiplication and a truncation is at most
+  // one off (|f| <= 2^20 + 2), which the two corrections take back (a division, exact, was
+  // 5 % of the interpolation).
   for (const auto& [d, m] : {std::pair{0, nx}, std::pair{2, nz}}) {
     int* const first = b.first[d];
-    const double period = m;
+    const double inv_m = 1.0 / m;
 #pragma omp simd
     for (int i = 0; i < kBlock; ++i) {
-      const double q = first[i] / period;
-      const int q_truncated = static_cast<int>(q);
-      first[i] -= m * (q_truncated - (q < q_truncated));
+      int wrapped = first[i] - m * static_cast<int>(first[i] * inv_m);
+      wrapped += wrapped < 0 ? m : 0;
+      wrapped -= wrapped >= m ? m : 0;
+      first[i] = wrapped;
     }
   }
 }
@@ -90,6 +97,10 @@ bool on_fast_path(const Peskin4Block& b, int i, int nx, int ny, int nz) {
 // The offsets of the stencil's four x planes (plane = ny nz nodes), wrapped.
 void x_planes(const Peskin4Block& b, int i, int nx, std::size_t plane, std::size_t out[4]) {
   const int x = b.first[0][i];
+  if (x + 3 < nx) {  // most nodes: no seam (a branch; the four selects cost the interpolation 4 %)
+    for (int a = 0; a < 4; ++a) out[a] = static_cast<std::size_t>(x + a) * plane;
+    return;
+  }
   for (int a = 0; a < 4; ++a) out[a] = static_cast<std::size_t>(x + a < nx ? x + a : x + a - nx) * plane;
 }
 
