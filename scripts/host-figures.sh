@@ -2,12 +2,13 @@
 # The figures docs/performance.md keeps per host, measured in one run: the fluid update
 # against the streaming-store triad (2 threads and 1, double and float storage), the
 # prefetch distance scan, and the coupled step against the plain fluid update on the bench
-# case. Two alternating passes of the fluid figures, three runs of the coupled one; the
-# summary gives each figure's range. Stop other heavy work first: the figures are the host's.
+# case, from its seeded state and from a run's state. Two alternating passes of the fluid
+# figures, three runs of the coupled one (two from the run's state); the summary gives each
+# figure's range. Stop other heavy work first: the figures are the host's.
 #
 #   bash scripts/host-figures.sh [RBCAL] [OUT]     (defaults: build/bin/rbcal of this checkout, ./host-figures)
 #
-# About 2.5 minutes on a 2-core host. Every bench run's JSON stays in OUT. HOST_FIGURES_QUICK=1
+# About 4 minutes on a 2-core host. Every bench run's JSON stays in OUT. HOST_FIGURES_QUICK=1
 # runs the same set on a tiny lattice in seconds (a check of the script, not figures).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,10 +25,12 @@ triad=$(( l3 > 0 ? (4 * l3 / 3 / 1048576 > 1024 ? 4 * l3 / 3 / 1048576 : 1024) :
 
 quick=()
 case_steps=40
+run_steps=8300
 if [ "${HOST_FIGURES_QUICK:-0}" = 1 ]; then
   triad=8
   quick=(--box 16,16,16 --steps 1)
   case_steps=2
+  run_steps=20
 fi
 
 bench() {  # NAME ARGS...: one bench run, its JSON kept as OUT/NAME.json
@@ -52,6 +55,16 @@ for run in 1 2 3; do
   bench "coupled_t2_${run}" --case data/cases/bench_dense_n8.json --case-steps "$case_steps" --threads 2
 done
 bench coupled_t1_1 --case data/cases/bench_dense_n8.json --case-steps "$case_steps" --threads 1
+# A run's state as well: by strain 4 shear has carried most cells out of the box in x, where
+# the runs spend nearly all their steps (docs/performance.md, "The coupled step against the
+# fluid update").
+echo "  the bench case to strain 4.3 (8300 steps)" >&2
+"$rbcal" simulate data/cases/bench_dense_n8.json -o "$out/bench_case_run" --overwrite -q \
+  --max-steps "$run_steps" > "$out/bench_case_run.txt" 2>&1
+for run in 1 2; do
+  bench "coupled_run_state_t2_${run}" --case data/cases/bench_dense_n8.json --case-steps "$case_steps" --threads 2 \
+    --case-checkpoint "$out/bench_case_run/checkpoint.bin"
+done
 
 python3 - "$out" <<'EOF'
 import glob, json, os, sys
@@ -89,4 +102,7 @@ print("prefetch scan, 2 threads, MLUPS: " + "; ".join(scan))
 for threads in (2, 1):
     ratios = [j["whole_over_plain_fluid"] for j in runs(f"coupled_t{threads}_*")]
     print(f"coupled step / plain fluid (bench case), {threads} thread(s): " + ", ".join(f"{x:.2f}" for x in ratios))
+state = runs("coupled_run_state_t2_*")
+print(f"coupled step / plain fluid (bench case, a run's state at strain {state[0]['start_strain']:.2f}), 2 threads: "
+      + ", ".join(f"{j['whole_over_plain_fluid']:.2f}" for j in state))
 EOF
