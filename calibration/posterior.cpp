@@ -12,7 +12,7 @@ namespace rbcal::calibration {
 LogPosterior::LogPosterior(const surrogate::ViscosityModel& model, double plasma_viscosity,
                            std::vector<RelativeViscosityPoint> points, const PosteriorOptions& options,
                            double plasma_viscosity_standard_error)
-    : observation_{&model, plasma_viscosity, options.setup.cell_radius},
+    : observation_{&model, plasma_viscosity, options.setup.cell_radius, {}},
       points_(std::move(points)),
       options_(options),
       plasma_viscosity_standard_error_(plasma_viscosity_standard_error) {

@@ -63,8 +63,8 @@ LibrarySummary summarise(const SimulationLibrary& library) {
 
   s.grid_from_plan = library.plan.has_value();
   s.listed_design = s.grid_from_plan && library.plan->is_listed();
-  const ParameterGrid grid = s.grid_from_plan ? *library.plan : ParameterGrid{phis, cas, lambdas};
-  s.grid = {unique_sorted(grid.phi), unique_sorted(grid.capillary_number), unique_sorted(grid.viscosity_ratio)};
+  const ParameterGrid grid = s.grid_from_plan ? *library.plan : ParameterGrid{phis, cas, lambdas, {}};
+  s.grid = {unique_sorted(grid.phi), unique_sorted(grid.capillary_number), unique_sorted(grid.viscosity_ratio), {}};
   // Grid points phi-major, lambda fastest (the order the tables read); a listed design's in its order.
   std::vector<ParameterPoint> points;
   const std::size_t spanned = s.grid.phi.size() * s.grid.capillary_number.size() * s.grid.viscosity_ratio.size();

@@ -103,7 +103,7 @@ struct CorrelatedGaussian {
 
 TEST(IndependenceSampler, CorrelatedGaussianQuantilesAndFewStepsPerEffectiveDraw) {
   const CorrelatedGaussian target;
-  const McmcResult r = sample_posterior(target.log_density(), {"x0", "x1"}, {target.mu, Eigen::Vector2d(0.5, 2.0)},
+  const McmcResult r = sample_posterior(target.log_density(), {"x0", "x1"}, {target.mu, Eigen::Vector2d(0.5, 2.0), {}},
                                         independence_options(3));
   ASSERT_TRUE(r.converged) << r.stop_reason;
   EXPECT_EQ(r.pilot_steps, 100);
@@ -126,7 +126,7 @@ TEST(IndependenceSampler, StartsWithoutAPilotFromALaplaceCovariance) {
   EXPECT_EQ(r.pilot_steps, 0);
   EXPECT_NE(r.sampler.find("Laplace covariance"), std::string::npos) << r.sampler;
   EXPECT_GT(r.acceptance_fraction, 0.5);
-  const McmcResult piloted = sample_posterior(log_density, {"x0", "x1"}, {target.mu, Eigen::Vector2d(0.5, 2.0)},
+  const McmcResult piloted = sample_posterior(log_density, {"x0", "x1"}, {target.mu, Eigen::Vector2d(0.5, 2.0), {}},
                                               independence_options(3));
   EXPECT_LT(2 * r.evaluations, piloted.evaluations);
   // Every proposal of the stage is recorded with its importance weight.
@@ -155,7 +155,7 @@ TEST(IndependenceSampler, SkewedTargetQuantiles) {
     return x(0) > 0.0 ? 2.0 * std::log(x(0)) - x(0) : -std::numeric_limits<double>::infinity();
   };
   const McmcResult r = sample_posterior(log_density, {"x"}, {Eigen::VectorXd::Constant(1, 3.0),
-                                                             Eigen::VectorXd::Constant(1, 0.5)},
+                                                             Eigen::VectorXd::Constant(1, 0.5), {}},
                                         independence_options(5));
   ASSERT_TRUE(r.converged) << r.stop_reason;
   EXPECT_EQ(r.pilot_steps, 100) << r.sampler;
@@ -171,7 +171,7 @@ TEST(IndependenceSampler, FallsBackToTheEnsembleWhenTheProposalFitsPoorly) {
   };
   McmcOptions o = independence_options(9);
   o.max_steps = 1000;
-  const McmcResult r = sample_posterior(log_density, {"x"}, {Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 1.0)}, o);
+  const McmcResult r = sample_posterior(log_density, {"x"}, {Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 1.0), {}}, o);
   EXPECT_EQ(r.pilot_steps, 0);
   EXPECT_NE(r.sampler.find("ensembles went on"), std::string::npos) << r.sampler;
   EXPECT_EQ(r.steps, 1000);  // the ensemble's own schedule, the pilot's steps included
@@ -179,7 +179,7 @@ TEST(IndependenceSampler, FallsBackToTheEnsembleWhenTheProposalFitsPoorly) {
 
 TEST(IndependenceSampler, SameSeedSameDraws) {
   const LogDensity log_density = [](const Eigen::VectorXd& x) { return -0.5 * x.squaredNorm(); };
-  const McmcStart start{Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1)};
+  const McmcStart start{Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1), {}};
   const McmcResult a = sample_posterior(log_density, {"x"}, start, independence_options(4));
   McmcOptions two_threads = independence_options(4);
   two_threads.threads = 2;

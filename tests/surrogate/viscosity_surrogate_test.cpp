@@ -236,7 +236,7 @@ TEST(CaseProposal, ProposesTheHoleInTheLibraryFirst) {
   for (const TrainingCase& c : synthetic_training_cases(full, 21))
     if (!in_hole(c.phi, c.ln_ca)) cases.push_back(c);
   const ViscositySurrogate s = ViscositySurrogate::fit(cases);
-  const ParameterGrid candidates{full.phi, full.ca, full.lambda};
+  const ParameterGrid candidates{full.phi, full.ca, full.lambda, {}};
   const std::vector<ProposedCase> proposals = propose_cases(s, candidates, 4);
   ASSERT_EQ(proposals.size(), 4u);
   for (const ProposedCase& p : proposals) {
@@ -262,7 +262,7 @@ TEST(CaseProposal, NeverProposesAPointAlreadySimulated) {
       for (double lambda : grid.lambda)
         if (!(phi == 0.25 && ca == 0.1)) simulated.push_back({phi, ca, lambda});
   const std::vector<ProposedCase> proposals =
-      propose_cases(s, ParameterGrid{grid.phi, grid.ca, grid.lambda}, 5, simulated);
+      propose_cases(s, ParameterGrid{grid.phi, grid.ca, grid.lambda, {}}, 5, simulated);
   const std::size_t free_points = grid.phi.size() * grid.ca.size() * grid.lambda.size() - simulated.size();
   ASSERT_EQ(proposals.size(), free_points);
   for (const ProposedCase& p : proposals) {
@@ -277,7 +277,7 @@ TEST(CaseProposal, EachChoiceIsTheMaximumAfterAddingTheEarlierOnes) {
   grid.ca = {0.01, 0.1, 0.8};
   const std::vector<TrainingCase> cases = synthetic_training_cases(grid, 4);
   const ViscositySurrogate s = ViscositySurrogate::fit(cases);
-  const ParameterGrid candidates = refined(ParameterGrid{grid.phi, grid.ca, grid.lambda});
+  const ParameterGrid candidates = refined(ParameterGrid{grid.phi, grid.ca, grid.lambda, {}});
   const std::vector<ProposedCase> proposals = propose_cases(s, candidates, 3);
   ASSERT_EQ(proposals.size(), 3u);
   EXPECT_EQ(proposals[0].relative_sd_when_chosen, proposals[0].relative_sd);
