@@ -70,9 +70,8 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   }
   // Cells leave the box in x as they are sheared (positions are unwrapped), so most nodes
   // of a long run lie outside it: their first index is wrapped in x and z as make_stencil
-  // wraps it, into [0, m). The quotient through a multiplication and a truncation is at most
-  // one off (|f| <= 2^20 + 2), which the two corrections take back (a division, exact, was
-  // 5 % of the interpolation).
+  // wraps it, into [0, m). The quotient through a multiplication (not a division) and a
+  // truncation is at most one off (|f| <= 2^20 + 2), which the two corrections take back.
   for (const auto& [d, m] : {std::pair{0, nx}, std::pair{2, nz}}) {
     int* const first = b.first[d];
     const double inv_m = 1.0 / m;
