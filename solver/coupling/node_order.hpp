@@ -46,8 +46,8 @@ struct NodeOrder {
   int nx = 0, ny = 0, nz = 0;
   // The kernel stencil at position[g], for the spreading and again for the interpolation that
   // follows the fluid step (the nodes have not moved): for the 2- and 3-point kernels, and
-  // for 4-point stencils that meet a wall or the periodic seam in z (the others are computed eight
-  // at a time where they are used). Computed, not stored: stored, the stencils (128 bytes a
+  // for 4-point stencils on lattices narrower than a support or of blown-up nodes (the others,
+  // walls and seams included, are computed eight at a time where they are used). Computed, not stored: stored, the stencils (128 bytes a
   // node) were written once and read twice per membrane update, and that traffic cost more
   // than computing them (three square roots) each time.
   KernelStencil stencil_of(std::size_t g) const { return make_stencil(kernel, position[g], nx, ny, nz); }

@@ -345,7 +345,9 @@ TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
 // node taken together) adds, to the last bit, what each node alone adds through its own
 // stencil (make_stencil), in the same order: slab by slab as the schedule runs them, node by
 // node within a slab. Nodes on lattice coordinates (zero weights), in runs of four, across
-// the periodic x boundary and whole boxes away in x (unwrapped positions) included.
+// the periodic x and z boundaries, next to the walls (weights renormalised) and whole boxes
+// away in x and z (unwrapped positions) included. A support of whole z rows adds
+// w_xy (w_z f) to each row, one across the z seam (w_xy w_z) f node by node (spread_one).
 TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   const int nx = 24, ny = 16, nz = 12;
   FluidConfig cfg;
@@ -354,7 +356,7 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   cfg.nz = nz;
   FluidLattice fluid(cfg);
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> px(0.0, nx), py(1.5, ny - 3.5), pz(1.5, nz - 3.5), frc(-1.0, 1.0);
+  std::uniform_real_distribution<double> px(0.0, nx), py(0.0, ny - 1.0), pz(0.0, nz), frc(-1.0, 1.0);
   std::uniform_int_distribution<int> boxes(-3, 3);
   std::vector<std::vector<Vec3>> x(3), f(3);
   for (int c = 0; c < 3; ++c)
@@ -363,23 +365,27 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
       if (i % 7 == 3) x[c].emplace_back(std::floor(px(rng)), std::floor(py(rng)), std::floor(pz(rng)));
       else if (i % 7 >= 4) x[c].push_back(x[c].back() + Vec3(0.01, 0.02, 0.03));  // a run
       else x[c].emplace_back(px(rng), py(rng), pz(rng));
-      if (c == 2 && i % 7 < 3) x[c].back().x() += boxes(rng) * nx;  // whole boxes away
+      if (c == 2 && i % 7 < 3) x[c].back() += Vec3(boxes(rng) * nx, 0.0, boxes(rng) * nz);  // whole boxes away
     }
   NodeOrder order;
   order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
   spread_forces(order, fluid);
   std::vector<double> expected(3 * fluid.node_count(), 0.0);
+  int walls = 0, seams = 0;
   auto add_slab = [&](int slab) {
     for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g) {
       const KernelStencil st = make_stencil(KernelKind::Peskin4, order.position[g], nx, ny, nz);
+      const bool rows = st.z[3] == st.z[0] + 3;
+      walls += st.wy[0] == 0.0 || st.wy[3] == 0.0;
+      seams += !rows;
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) {
           const double wab = st.wx[a] * st.wy[b];
+          if (wab == 0.0) continue;  // beyond a wall
           for (int k = 0; k < 4; ++k)
             for (int d = 0; d < 3; ++d) {
-              const double fz = st.wz[k] * order.force[g][d];
               double& at = expected[d * fluid.node_count() + fluid.index(st.x[a], st.y[b], st.z[k])];
-              at = at + wab * fz;
+              at = rows ? at + wab * (st.wz[k] * order.force[g][d]) : at + (wab * st.wz[k]) * order.force[g][d];
             }
         }
     }
@@ -392,4 +398,6 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   for (int d = 0; d < 3; ++d)
     for (std::size_t n = 0; n < fluid.node_count(); ++n) differing += fluid.force(d)[n] != expected[d * fluid.node_count() + n];
   EXPECT_EQ(differing, 0u);
+  EXPECT_GT(walls, 20);  // both kinds of edge were met
+  EXPECT_GT(seams, 50);
 }
