@@ -85,6 +85,14 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   }
 }
 
+// The velocity from the z rows summed with their x-y weights (one vector per component):
+// weighed with node i's z weights and added up, (z0 + z1) + (z2 + z3).
+Vec3 weigh_rows_along_z(const Peskin4Block& b, int i, v4d sum0, v4d sum1, v4d sum2) {
+  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
+  const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
+  return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
+}
+
 // Whether node i's stencil is one of plain rows: z contiguous (no periodic seam in z) and
 // no wall in y; x may wrap (the row planes are taken modulo nx: x_planes). Only lattices at
 // least a support wide in x wrap each plane at most once.
@@ -168,10 +176,7 @@ Vec3 interpolate_edge(const Peskin4Block& b, int i, const EdgeRows& e, const dou
       sum1 += wab * load4(u1 + at);
       sum2 += wab * load4(u2 + at);
     });
-    const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
-    const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
-    return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]),
-                (t2[0] + t2[1]) + (t2[2] + t2[3]));
+    return weigh_rows_along_z(b, i, sum0, sum1, sum2);
   }
   Vec3 sum = Vec3::Zero();
   for_each_edge_row(b, i, e, [&](std::size_t row, double wab) {
@@ -272,9 +277,7 @@ Vec3 interpolate_rows(const Peskin4Block& b, int i, const double* const u[3], in
       sum1 += wab * load4(u1 + at);
       sum2 += wab * load4(u2 + at);
     }
-  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
-  const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
-  return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
+  return weigh_rows_along_z(b, i, sum0, sum1, sum2);
 }
 
 // Adds one node's force through its stencil.
