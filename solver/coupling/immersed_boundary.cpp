@@ -85,14 +85,6 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   }
 }
 
-// The velocity from the z rows summed with their x-y weights (one vector per component):
-// weighed with node i's z weights and added up, (z0 + z1) + (z2 + z3).
-Vec3 weigh_rows_along_z(const Peskin4Block& b, int i, v4d sum0, v4d sum1, v4d sum2) {
-  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
-  const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
-  return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
-}
-
 // Whether node i's stencil is one of plain rows: z contiguous (no periodic seam in z) and
 // no wall in y; x may wrap (the row planes are taken modulo nx: x_planes). Only lattices at
 // least a support wide in x wrap each plane at most once.
@@ -111,108 +103,43 @@ void x_planes(const Peskin4Block& b, int i, int nx, std::size_t plane, std::size
   for (int a = 0; a < 4; ++a) out[a] = static_cast<std::size_t>(x + a < nx ? x + a : x + a - nx) * plane;
 }
 
-// A support that meets a wall or the periodic seam in z: its rows as make_stencil gives them
-// (y weights beyond a wall dropped and the rest renormalised, z indices wrapped), from the
-// block's weights, so that these nodes need no make_stencil (its square roots and modulos)
-// and give the same sums to the last bit.
-struct EdgeRows {
-  std::size_t plane[4];  // x-plane offsets, wrapped (x_planes)
-  std::size_t row[4];    // y nz of each y row (0 where its weight is dropped)
-  double wy[4];
-  int z[4];  // wrapped z indices
-  bool z_contiguous;
-};
-
-// False where the node needs the general path: lattices narrower than a support in x or z,
-// or a support wholly beyond a wall (a blown-up node: peskin4_block puts it there).
-bool edge_rows(const Peskin4Block& b, int i, int nx, int ny, int nz, EdgeRows& e) {
+// make_stencil's stencil of node i, built from the block's weights and wrapped first indices
+// (no square roots or modulos), for a support that meets a wall or the periodic seam in z:
+// the y weights beyond a wall dropped and the rest renormalised, in make_stencil's order, so
+// that the sums are the same to the last bit. False where the node needs make_stencil:
+// lattices narrower than a support in x or z, or a support wholly beyond a wall (a blown-up
+// node: peskin4_block puts it there).
+bool block_stencil(const Peskin4Block& b, int i, int nx, int ny, int nz, KernelStencil& s) {
   const int x = b.first[0][i], y = b.first[1][i], z = b.first[2][i];
   if (nx < 4 || nz < 4 || x < 0 || x >= nx || z < 0 || z >= nz || y + 3 < 0 || y >= ny) return false;
-  x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, e.plane);
+  s.count = 4;
   bool clipped = false;
   for (int c = 0; c < 4; ++c) {
-    e.wy[c] = b.w[1][c][i];
-    int row = y + c;
-    if (row < 0 || row >= ny) {
-      e.wy[c] = 0.0;
-      row = 0;
+    s.wx[c] = b.w[0][c][i];
+    s.wy[c] = b.w[1][c][i];
+    s.wz[c] = b.w[2][c][i];
+    s.x[c] = static_cast<std::int16_t>(x + c < nx ? x + c : x + c - nx);
+    s.z[c] = static_cast<std::int16_t>(z + c < nz ? z + c : z + c - nz);
+    s.y[c] = static_cast<std::int16_t>(y + c);
+    if (y + c < 0 || y + c >= ny) {
+      s.wy[c] = 0.0;
+      s.y[c] = 0;
       clipped = true;
     }
-    e.row[c] = static_cast<std::size_t>(row) * nz;
-    e.z[c] = z + c < nz ? z + c : z + c - nz;
   }
-  if (clipped) {  // as make_stencil, in its order
+  if (clipped) {
     double sum = 0.0;
-    for (int c = 0; c < 4; ++c) sum += e.wy[c];
+    for (int c = 0; c < 4; ++c) sum += s.wy[c];
     if (sum > 0.0)
-      for (int c = 0; c < 4; ++c) e.wy[c] /= sum;
+      for (int c = 0; c < 4; ++c) s.wy[c] /= sum;
   }
-  e.z_contiguous = z + 3 < nz;
   return true;
 }
 
-// Calls f(row, w_xy) for each x-y row of the support whose weight is not zero (beyond a
-// wall), row being the offset of its node z = 0.
-template <class F>
-void for_each_edge_row(const Peskin4Block& b, int i, const EdgeRows& e, F&& f) {
-  for (int a = 0; a < 4; ++a)
-    for (int c = 0; c < 4; ++c) {
-      const double wab = b.w[0][a][i] * e.wy[c];
-      if (wab != 0.0) f(e.plane[a] + e.row[c], wab);
-    }
-}
-
-// interpolate_field for such a node: whole z rows as vectors where z is contiguous, else node
-// by node in interpolate()'s order.
-Vec3 interpolate_edge(const Peskin4Block& b, int i, const EdgeRows& e, const double* const u[3]) {
-  const double* const u0 = u[0];
-  const double* const u1 = u[1];
-  const double* const u2 = u[2];
-  if (e.z_contiguous) {
-    v4d sum0 = {}, sum1 = {}, sum2 = {};
-    for_each_edge_row(b, i, e, [&](std::size_t row, double wab) {
-      const std::size_t at = row + e.z[0];
-      sum0 += wab * load4(u0 + at);
-      sum1 += wab * load4(u1 + at);
-      sum2 += wab * load4(u2 + at);
-    });
-    return weigh_rows_along_z(b, i, sum0, sum1, sum2);
-  }
-  Vec3 sum = Vec3::Zero();
-  for_each_edge_row(b, i, e, [&](std::size_t row, double wab) {
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t n = row + e.z[k];
-      sum += (wab * b.w[2][k][i]) * Vec3(u0[n], u1[n], u2[n]);
-    }
-  });
-  return sum;
-}
-
-// spread_one for such a node, in its arithmetic.
-void spread_edge(const Peskin4Block& b, int i, const EdgeRows& e, const Vec3& force, double* const f[3]) {
-  double* const f0 = f[0];
-  double* const f1 = f[1];
-  double* const f2 = f[2];
-  if (e.z_contiguous) {
-    const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
-    const v4d fz0 = wz * force[0], fz1 = wz * force[1], fz2 = wz * force[2];
-    for_each_edge_row(b, i, e, [&](std::size_t row, double wab) {
-      const std::size_t at = row + e.z[0];
-      store4(f0 + at, load4(f0 + at) + wab * fz0);
-      store4(f1 + at, load4(f1 + at) + wab * fz1);
-      store4(f2 + at, load4(f2 + at) + wab * fz2);
-    });
-    return;
-  }
-  for_each_edge_row(b, i, e, [&](std::size_t row, double wab) {
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t n = row + e.z[k];
-      const double w = wab * b.w[2][k][i];
-      f0[n] += w * force[0];
-      f1[n] += w * force[1];
-      f2[n] += w * force[2];
-    }
-  });
+// The stencil of sorted node g (node i of its block) off the block's plain rows.
+KernelStencil edge_stencil(const Peskin4Block& b, int i, const NodeOrder& order, std::size_t g) {
+  KernelStencil s;
+  return block_stencil(b, i, order.nx, order.ny, order.nz, s) ? s : order.stencil_of(g);
 }
 
 // Sorted nodes often share their first lattice node with the one before (about 30 % of them
@@ -277,7 +204,9 @@ Vec3 interpolate_rows(const Peskin4Block& b, int i, const double* const u[3], in
       sum1 += wab * load4(u1 + at);
       sum2 += wab * load4(u2 + at);
     }
-  return weigh_rows_along_z(b, i, sum0, sum1, sum2);
+  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
+  const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
+  return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
 }
 
 // Adds one node's force through its stencil.
@@ -329,9 +258,7 @@ void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
       peskin4_block(order.position.data() + g0, n, nx, nz, block);
       for (int i = 0; i < n;) {
         if (!on_fast_path(block, i, nx, ny, nz)) {
-          EdgeRows edge;
-          if (edge_rows(block, i, nx, ny, nz, edge)) spread_edge(block, i, edge, order.force[g0 + i], f);
-          else spread_one(order.stencil_of(g0 + i), order.force[g0 + i], f, ny, nz);
+          spread_one(edge_stencil(block, i, order, g0 + i), order.force[g0 + i], f, ny, nz);
           ++i;
           continue;
         }
@@ -400,13 +327,10 @@ void interpolate_sorted(const NodeOrder& order, std::size_t begin, std::size_t e
   for (std::size_t g0 = begin; g0 < end; g0 += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, end - g0));
     peskin4_block(order.position.data() + g0, n, nx, nz, block);
-    for (int i = 0; i < n; ++i) {
-      Vec3& into = out[g0 + i - begin];
-      EdgeRows edge;
-      if (on_fast_path(block, i, nx, ny, nz)) into = interpolate_rows(block, i, u, nx, ny, nz);
-      else if (edge_rows(block, i, nx, ny, nz, edge)) into = interpolate_edge(block, i, edge, u);
-      else into = interpolate_field(order.stencil_of(g0 + i), u, ny, nz);
-    }
+    for (int i = 0; i < n; ++i)
+      out[g0 + i - begin] = on_fast_path(block, i, nx, ny, nz)
+                                ? interpolate_rows(block, i, u, nx, ny, nz)
+                                : interpolate_field(edge_stencil(block, i, order, g0 + i), u, ny, nz);
   }
 }
 
