@@ -376,7 +376,7 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
     for (std::size_t g = order.slab_start[slab]; g < order.slab_start[slab + 1]; ++g) {
       const KernelStencil st = make_stencil(KernelKind::Peskin4, order.position[g], nx, ny, nz);
       const bool rows = st.z[3] == st.z[0] + 3;
-      walls += st.wy[0] == 0.0 || st.wy[3] == 0.0;
+      walls += order.position[g].y() < 1.0 || order.position[g].y() >= ny - 2.0;  // a row beyond a wall
       seams += !rows;
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) {
