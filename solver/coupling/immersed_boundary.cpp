@@ -44,15 +44,24 @@ void peskin4_block(const Vec3* p, int n, int nx, int nz, Peskin4Block& b) {
   // stay defined.
   constexpr double far = 1048576.0;
   alignas(64) double r[3][kBlock];
+  const double* const q = p[0].data();  // Vec3 holds three packed doubles
+  if (n == kBlock) {
+#pragma omp simd
+    for (int i = 0; i < kBlock; ++i)
+      for (int d = 0; d < 3; ++d) r[d][i] = q[3 * i + d];
+  } else {
+    for (int i = 0; i < kBlock; ++i)
+      for (int d = 0; d < 3; ++d) r[d][i] = q[3 * std::min(i, n - 1) + d];
+  }
+  // The range checks as vectors: written as scalar stores read back as a vector, they
+  // stalled on store forwarding.
+#pragma omp simd
   for (int i = 0; i < kBlock; ++i) {
-    const Vec3& x = p[std::min(i, n - 1)];
-    bool near = true;
-    for (int d = 0; d < 3; ++d) {
-      const bool in_range = x[d] > -far && x[d] < far;  // false for NaN
-      near &= in_range;
-      r[d][i] = in_range ? x[d] : -far;
-    }
-    if (!near) r[1][i] = -far;
+    const bool in_x = r[0][i] > -far && r[0][i] < far, in_y = r[1][i] > -far && r[1][i] < far,
+               in_z = r[2][i] > -far && r[2][i] < far;  // false for NaN
+    r[0][i] = in_x ? r[0][i] : -far;
+    r[2][i] = in_z ? r[2][i] : -far;
+    r[1][i] = in_x && in_y && in_z ? r[1][i] : -far;
   }
   for (int d = 0; d < 3; ++d) {
     double* const w0 = b.w[d][0];

@@ -306,12 +306,17 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
     x[2].emplace_back(k * nx + 1.25, py(rng), k * nz + 1.75);
     f[2].emplace_back(0.0, 0.0, 0.0);
   }
+  // Nodes beyond 2^20 lattice spacings in x or z, which the blocks hand to make_stencil.
+  for (const Vec3& p : {Vec3(3.0e6 + 0.3, 4.2, 2.5), Vec3(0.4, 7.7, -2.5e6 - 0.6)}) {
+    x[2].push_back(p);
+    f[2].emplace_back(0.0, 0.0, 0.0);
+  }
   NodeOrder order;
   order_nodes(KernelKind::Peskin4, x, f, nx, ny, nz, order);
   const std::size_t total = order.nodes.size();
   std::vector<Vec3> sampled(total);
   interpolate_sorted(order, 0, total, u, sampled.data());
-  int walls = 0, wraps = 0, away = 0;
+  int walls = 0, wraps = 0, away = 0, far = 0;
   for (std::size_t g = 0; g < total; ++g) {
     const KernelStencil s = make_stencil(KernelKind::Peskin4, order.position[g], nx, ny, nz);
     const Vec3 expected = interpolate(s, [&](int i, int j, int k) {
@@ -324,7 +329,9 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
     walls += order.position[g].y() < 1.0 || order.position[g].y() >= ny - 2.0;
     wraps += s.x[3] != s.x[0] + 3 || s.z[3] != s.z[0] + 3;
     away += order.position[g].x() < -nx || order.position[g].x() >= 2 * nx;
+    far += std::abs(order.position[g].x()) > 1048576.0 || std::abs(order.position[g].z()) > 1048576.0;
   }
+  EXPECT_EQ(far, 2);
   // Both kinds of boundary were met, and nodes boxes away.
   EXPECT_GT(walls, 20);
   EXPECT_GT(wraps, 50);
