@@ -239,8 +239,16 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
       }
     return;
   }
+  // The force in locals: read through the reference, it was reloaded after every store (a
+  // double of the force field might alias it).
+  const double fx = force[0], fy = force[1], fz = force[2];
+  double* const f0 = f[0];
+  double* const f1 = f[1];
+  double* const f2 = f[2];
   for_each_stencil_node(s, ny, nz, [&](std::size_t node, double w) {
-    for (int d = 0; d < 3; ++d) f[d][node] += w * force[d];
+    f0[node] += w * fx;
+    f1[node] += w * fy;
+    f2[node] += w * fz;
   });
 }
 

@@ -30,14 +30,20 @@ void spread_forces(KernelKind kernel, const std::vector<Vec3>& positions, const 
 // Fluid velocity interpolated at a point; u_node(i, j, k) supplies nodal velocities.
 template <class VelocityAt>
 Vec3 interpolate(const KernelStencil& s, VelocityAt&& u_node) {
-  Vec3 u = Vec3::Zero();
+  // Summed in locals: summed in the returned vector, which the caller's memory holds and a
+  // store to a double may alias, each of the 64 terms was stored and read back.
+  double sum[3] = {0.0, 0.0, 0.0};
   for (int a = 0; a < s.count; ++a)
     for (int b = 0; b < s.count; ++b) {
       const double wab = s.wx[a] * s.wy[b];
       if (wab == 0.0) continue;
-      for (int c = 0; c < s.count; ++c) u += (wab * s.wz[c]) * u_node(s.x[a], s.y[b], s.z[c]);
+      for (int c = 0; c < s.count; ++c) {
+        const double w = wab * s.wz[c];
+        const Vec3 u = u_node(s.x[a], s.y[b], s.z[c]);
+        for (int d = 0; d < 3; ++d) sum[d] += w * u[d];
+      }
     }
-  return u;
+  return Vec3(sum[0], sum[1], sum[2]);
 }
 
 // Velocity at a point from a nodal velocity field in structure-of-arrays form
