@@ -1,6 +1,7 @@
 #include "solver/membrane/volume_constraint.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "solver/membrane/element_forces.hpp"
@@ -32,13 +33,15 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
   return six_v / 6.0;
 }
 
-double correct_volume(std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double v0) {
+double correct_volume(std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double v0,
+                      double* largest_shift) {
   std::vector<Vec3> gradient(x.size(), Vec3::Zero());
   const double v = add_volume_gradient(x, triangles, 1.0, gradient);
   double norm2 = 0.0;
   for (const Vec3& g : gradient) norm2 += g.squaredNorm();
   const double s = (v0 - v) / norm2;
   for (std::size_t i = 0; i < x.size(); ++i) x[i] += s * gradient[i];
+  if (largest_shift) *largest_shift = std::abs(v0 - v) / std::sqrt(norm2);
   return v / v0 - 1.0;
 }
 

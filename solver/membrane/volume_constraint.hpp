@@ -25,8 +25,10 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
                            std::vector<Vec3>& forces);
 
 // Shifts x so that the enclosed volume returns to v0 (to first order); returns the
-// relative volume error before the correction.
-double correct_volume(std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double v0);
+// relative volume error before the correction. With `largest_shift`, also a bound on how far
+// any node moved: |V0 - V| / |dV/dx| (no node's share of the gradient exceeds its norm).
+double correct_volume(std::vector<Vec3>& x, const std::vector<Triangle>& triangles, double v0,
+                      double* largest_shift = nullptr);
 
 class VolumePenalty {
  public:

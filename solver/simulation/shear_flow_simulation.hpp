@@ -12,6 +12,7 @@
 // (or RK4 through the frozen interpolated field) -> volume correction
 // (volume_constraint.hpp). A larger k is the membrane time step of HemoCell-style
 // multi-rate coupling; its stability limit is k times tighter (docs/performance.md).
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -165,6 +166,11 @@ class ShearFlowSimulation {
   mutable bool cells_stale_ = false, fluid_stale_ = false;
   NodeOrder order_;  // of the membrane nodes, sorted at x_indicator_, gathered at x_ (node_order.hpp)
   bool order_from_indicator_ = false;  // order_ sorted from the current x_indicator_
+  // A bound on how far any node has moved from x_indicator_: the sum over the membrane
+  // updates since of the fastest node's step and the largest volume-correction shift
+  // (infinite where not known, as after a restore). While it stays below the indicator
+  // tolerance, update_viscosity skips its pass over all nodes, whose answer it knows.
+  double drift_bound_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace rbcal::solver
