@@ -113,35 +113,20 @@ void x_planes(const Peskin4Block& b, int i, int nx, std::size_t plane, std::size
 }
 
 // make_stencil's stencil of node i, built from the block's weights and wrapped first indices
-// (no square roots or modulos), for a support that meets a wall or the periodic seam in z:
-// the y weights beyond a wall dropped and the rest renormalised, in make_stencil's order, so
-// that the sums are the same to the last bit. False where the node needs make_stencil:
-// lattices narrower than a support in x or z, or a support wholly beyond a wall (a blown-up
-// node: peskin4_block puts it there).
+// (no square roots), for a support that meets a wall or the periodic seam in z: placed and
+// clipped at the walls by make_stencil's own place_support, so that the sums are the same to
+// the last bit. False where the node needs make_stencil: lattices narrower than a support in
+// x or z, or a support wholly beyond a wall (a blown-up node: peskin4_block puts it there).
 bool block_stencil(const Peskin4Block& b, int i, int nx, int ny, int nz, KernelStencil& s) {
   const int x = b.first[0][i], y = b.first[1][i], z = b.first[2][i];
   if (nx < 4 || nz < 4 || x < 0 || x >= nx || z < 0 || z >= nz || y + 3 < 0 || y >= ny) return false;
   s.count = 4;
-  bool clipped = false;
   for (int c = 0; c < 4; ++c) {
     s.wx[c] = b.w[0][c][i];
     s.wy[c] = b.w[1][c][i];
     s.wz[c] = b.w[2][c][i];
-    s.x[c] = static_cast<std::int16_t>(x + c < nx ? x + c : x + c - nx);
-    s.z[c] = static_cast<std::int16_t>(z + c < nz ? z + c : z + c - nz);
-    s.y[c] = static_cast<std::int16_t>(y + c);
-    if (y + c < 0 || y + c >= ny) {
-      s.wy[c] = 0.0;
-      s.y[c] = 0;
-      clipped = true;
-    }
   }
-  if (clipped) {
-    double sum = 0.0;
-    for (int c = 0; c < 4; ++c) sum += s.wy[c];
-    if (sum > 0.0)
-      for (int c = 0; c < 4; ++c) s.wy[c] /= sum;
-  }
+  place_support(s, x, y, z, nx, ny, nz);
   return true;
 }
 

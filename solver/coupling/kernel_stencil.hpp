@@ -76,20 +76,19 @@ RBCAL_HD inline void kernel_weights_1d(KernelKind kernel, double r, int support,
   for (int i = 0; i < support; ++i) w[i] = kernel_weight(kernel, r - (first + i));
 }
 
-RBCAL_HD inline KernelStencil make_stencil(KernelKind kernel, double px, double py, double pz, int nx, int ny, int nz) {
-  KernelStencil s;
-  s.count = static_cast<std::int16_t>(kernel_support(kernel));
-  int fx, fy, fz;
-  kernel_weights_1d(kernel, px, s.count, fx, s.wx);
-  kernel_weights_1d(kernel, py, s.count, fy, s.wy);
-  kernel_weights_1d(kernel, pz, s.count, fz, s.wz);
-  // One modulo per direction, only where the support starts outside the box; its later
-  // nodes wrap at most once.
-  const int x0 = fx >= 0 && fx < nx ? fx : wrap_index(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap_index(fz, nz);
+// i >= 0 wrapped into [0, n), without a modulo below 2n (a support starting in the box).
+RBCAL_HD inline int wrap_from_box(int i, int n) { return i < n ? i : (i - n < n ? i - n : wrap_index(i, n)); }
+
+// Fills the stencil's lattice indices from its support's first node (x0 and z0 already in
+// [0, n): their later nodes wrap by at most one period on lattices at least a support wide)
+// and drops the y weights beyond a wall, renormalising the rest; s.count and the weights
+// are set. The one place this is done, so that stencils built from the blocks of eight
+// (immersed_boundary.cpp) sum to the last bit as make_stencil's do.
+RBCAL_HD inline void place_support(KernelStencil& s, int x0, int fy, int z0, int nx, int ny, int nz) {
   bool clipped = false;
   for (int i = 0; i < s.count; ++i) {
-    s.x[i] = static_cast<std::int16_t>(x0 + i < nx ? x0 + i : wrap_index(x0 + i, nx));
-    s.z[i] = static_cast<std::int16_t>(z0 + i < nz ? z0 + i : wrap_index(z0 + i, nz));
+    s.x[i] = static_cast<std::int16_t>(wrap_from_box(x0 + i, nx));
+    s.z[i] = static_cast<std::int16_t>(wrap_from_box(z0 + i, nz));
     s.y[i] = static_cast<std::int16_t>(fy + i);
     if (s.y[i] < 0 || s.y[i] >= ny) {
       s.wy[i] = 0.0;  // beyond a wall
@@ -103,6 +102,19 @@ RBCAL_HD inline KernelStencil make_stencil(KernelKind kernel, double px, double 
     if (wy_sum > 0.0)
       for (int i = 0; i < s.count; ++i) s.wy[i] /= wy_sum;
   }
+}
+
+RBCAL_HD inline KernelStencil make_stencil(KernelKind kernel, double px, double py, double pz, int nx, int ny, int nz) {
+  KernelStencil s;
+  s.count = static_cast<std::int16_t>(kernel_support(kernel));
+  int fx, fy, fz;
+  kernel_weights_1d(kernel, px, s.count, fx, s.wx);
+  kernel_weights_1d(kernel, py, s.count, fy, s.wy);
+  kernel_weights_1d(kernel, pz, s.count, fz, s.wz);
+  // One modulo per direction, only where the support starts outside the box; its later
+  // nodes wrap at most once.
+  const int x0 = fx >= 0 && fx < nx ? fx : wrap_index(fx, nx), z0 = fz >= 0 && fz < nz ? fz : wrap_index(fz, nz);
+  place_support(s, x0, fy, z0, nx, ny, nz);
   return s;
 }
 
