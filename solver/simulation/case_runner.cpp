@@ -213,6 +213,14 @@ class CaseRun {
     if (c_.coupling_interval_chosen && opt_.coupling_interval == 0)
       *opt_.progress << "  coupling interval " << c_.coupling_interval << " (auto: K_s,lu (sum phi^2)^3 = "
                      << coupling_stiffness(c_) << " per step of interval, bound " << kCouplingStabilityBound << ")\n";
+    // A given interval (or 1 from auto) beyond the measured bound: the run will likely stop at
+    // the node Mach guard, so say why before it starts.
+    const int interval = opt_.coupling_interval > 0 ? opt_.coupling_interval : c_.coupling_interval;
+    if (interval * coupling_stiffness(c_) > kCouplingStabilityBound)
+      *opt_.progress << "  warning: coupling interval " << interval << " is beyond the measured stability bound: K_s,lu k"
+                     << " (sum phi^2)^3 = " << interval * coupling_stiffness(c_) << " > " << kCouplingStabilityBound
+                     << " (docs/performance.md, \"Stability of the explicit coupling\"); expect the node Mach guard to stop"
+                     << " the run\n";
     if (opt_.backend == Backend::Cpu)
       *opt_.progress << "  fluid update prefetch " << prefetch_.distance << " populations ahead"
                      << (prefetch_.timed                     ? " (timed on this host)"
