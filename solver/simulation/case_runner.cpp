@@ -216,7 +216,7 @@ class CaseRun {
     // A given interval (or 1 from auto) beyond the measured bound: the run will likely stop at
     // the node Mach guard, so say why before it starts.
     const int interval = opt_.coupling_interval > 0 ? opt_.coupling_interval : c_.coupling_interval;
-    if (interval * coupling_stiffness(c_) > kCouplingStabilityBound)
+    if (!within_coupling_bound(c_, interval))
       *opt_.progress << "  warning: coupling interval " << interval << " is beyond the measured stability bound: K_s,lu k"
                      << " (sum phi^2)^3 = " << interval * coupling_stiffness(c_) << " > " << kCouplingStabilityBound
                      << " (docs/performance.md, \"Stability of the explicit coupling\"); expect the node Mach guard to stop"

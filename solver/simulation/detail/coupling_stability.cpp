@@ -14,10 +14,13 @@ double coupling_stiffness(const SimulationCase& c) {
   return area_modulus * self_weight * self_weight * self_weight;
 }
 
+bool within_coupling_bound(const SimulationCase& c, int k) {
+  return k * coupling_stiffness(c) <= kCouplingStabilityBound;
+}
+
 int stable_coupling_interval(const SimulationCase& c, int largest) {
-  const double stiffness = coupling_stiffness(c);
   int k = 1;
-  while (k < largest && (k + 1) * stiffness <= kCouplingStabilityBound) ++k;
+  while (k < largest && within_coupling_bound(c, k + 1)) ++k;
   return k;
 }
 

@@ -17,6 +17,9 @@ inline constexpr double kCouplingStabilityBound = 0.154;
 // neo-Hookean ones.
 double coupling_stiffness(const SimulationCase& c);
 
+// Whether the case at coupling interval k stays within the bound: k coupling_stiffness(c) <= it.
+bool within_coupling_bound(const SimulationCase& c, int k);
+
 // The largest coupling interval in [1, largest] within the bound (1 where even 1 is not).
 int stable_coupling_interval(const SimulationCase& c, int largest = 2);
 
