@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "solver/membrane/element_forces.hpp"
+#include "solver/membrane/node_gather.hpp"
 
 namespace rbcal::solver {
 
@@ -53,12 +54,11 @@ double DihedralBending::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>
   const double kd = k_d_;
   for (std::size_t first = 0; first < hinges_.size(); first += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, hinges_.size() - first));
-    for (int i = 0; i < n; ++i) {
-      const Hinge& h = hinges_[first + i];
-      const int node[4] = {h.a, h.b, h.c, h.d};
-      for (int v = 0; v < 4; ++v)
-        for (int d = 0; d < 3; ++d) in[3 * v + d][i] = x[node[v]][d];
-    }
+    const Hinge* h = hinges_.data() + first;
+    gather_nodes_to_columns<kBlock>(x, n, [h](int i) { return h[i].a; }, &in[AX]);
+    gather_nodes_to_columns<kBlock>(x, n, [h](int i) { return h[i].b; }, &in[BX]);
+    gather_nodes_to_columns<kBlock>(x, n, [h](int i) { return h[i].c; }, &in[CX]);
+    gather_nodes_to_columns<kBlock>(x, n, [h](int i) { return h[i].d; }, &in[DX]);
     const double* cos0 = cos0_.data() + first;
     const double* sin0 = sin0_.data() + first;
     const double* inv_min_n1sq = inv_min_n1sq_.data() + first;

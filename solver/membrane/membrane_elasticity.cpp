@@ -6,6 +6,7 @@
 #include <string>
 
 #include "solver/membrane/element_forces.hpp"
+#include "solver/membrane/node_gather.hpp"
 
 namespace rbcal::solver {
 
@@ -49,11 +50,10 @@ double add_element_forces(const std::vector<Vec3>& x, const MembraneElasticity::
   const std::size_t count = el.v0.size();
   for (std::size_t first = 0; first < count; first += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, count - first));
-    for (int i = 0; i < n; ++i) {
-      const int node[3] = {el.v0[first + i], el.v1[first + i], el.v2[first + i]};
-      for (int v = 0; v < 3; ++v)
-        for (int d = 0; d < 3; ++d) in[3 * v + d][i] = x[node[v]][d];
-    }
+    const int *v0 = el.v0.data() + first, *v1 = el.v1.data() + first, *v2 = el.v2.data() + first;
+    gather_nodes_to_columns<kBlock>(x, n, [v0](int i) { return v0[i]; }, &in[AX]);
+    gather_nodes_to_columns<kBlock>(x, n, [v1](int i) { return v1[i]; }, &in[BX]);
+    gather_nodes_to_columns<kBlock>(x, n, [v2](int i) { return v2[i]; }, &in[CX]);
     const double* inv_g11 = el.inv_g11.data() + first;
     const double* inv_g12 = el.inv_g12.data() + first;
     const double* inv_g22 = el.inv_g22.data() + first;

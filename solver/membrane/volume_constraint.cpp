@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "solver/membrane/element_forces.hpp"
+#include "solver/membrane/node_gather.hpp"
 
 namespace rbcal::solver {
 
@@ -19,9 +20,10 @@ double add_volume_gradient(const std::vector<Vec3>& x, const std::vector<Triangl
   double six_v = 0.0;
   for (std::size_t first = 0; first < triangles.size(); first += kBlock) {
     const int n = static_cast<int>(std::min<std::size_t>(kBlock, triangles.size() - first));
-    for (int i = 0; i < n; ++i)
-      for (int v = 0; v < 3; ++v)
-        for (int d = 0; d < 3; ++d) in[3 * v + d][i] = x[triangles[first + i][v]][d];
+    const Triangle* t = triangles.data() + first;
+    gather_nodes_to_columns<kBlock>(x, n, [t](int i) { return t[i][0]; }, &in[AX]);
+    gather_nodes_to_columns<kBlock>(x, n, [t](int i) { return t[i][1]; }, &in[BX]);
+    gather_nodes_to_columns<kBlock>(x, n, [t](int i) { return t[i][2]; }, &in[CX]);
 #pragma omp simd reduction(+ : six_v)
     for (int i = 0; i < n; ++i) {
       six_v += triangle_volume_gradient(&in[0][i], kBlock, scale, &out[0][i], kBlock);
