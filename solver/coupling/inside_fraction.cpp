@@ -88,9 +88,9 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
   out.pbase = pbase;
   out.qbase = qbase;
   out.qcount = qcount;
-  // The crossings are hits[0, found): the buffer keeps its size between updates and grows
-  // only when a mesh needs more.
-  auto& hits = out.unsorted;
+  // The crossings are hits[0, found): a buffer per thread, warm from the thread's previous
+  // mesh (one per mesh came cold from memory at every build), grown when a mesh needs more.
+  thread_local std::vector<Hit> hits;
   std::size_t found = 0;
   for (const Triangle& t : triangles) {
     const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
@@ -116,7 +116,7 @@ void InsideFraction::crossings_of(const std::vector<Vec3>& x, const std::vector<
         const double wa = ((b.x() - px) * (c.y() - py) - (b.y() - py) * (c.x() - px)) * inv_area2;
         const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) * inv_area2;
         const double wc = 1.0 - wa - wb;
-        slot[found] = {(p - pbase) * qcount + (q - qbase), wa * a.z() + wb * b.z() + wc * c.z(), sign};
+        slot[found] = {wa * a.z() + wb * b.z() + wc * c.z(), (p - pbase) * qcount + (q - qbase), sign};
         found += (wa >= 0.0) & (wb >= 0.0) & (wc >= 0.0);
       }
   }

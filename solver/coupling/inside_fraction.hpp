@@ -39,17 +39,16 @@ class InsideFraction {
  private:
   // Signed z-crossings of one mesh on the scan lines of its bounding box, sorted by
   // line, then z.
-  struct Hit {
-    int line;  // (p - pbase) * qcount + (q - qbase)
+  struct Hit {  // 16 bytes: the buffers are written once per build, from a cold cache
     double z;
+    int line;  // (p - pbase) * qcount + (q - qbase)
     int sign;  // +1 entering, -1 leaving
   };
   struct Crossings {
     int pbase = 0, qbase = 0, qcount = 0;  // first line indices, lines along y
     bool oversized = false;  // the mesh spans more than the lattice in x or y: no hits
     std::vector<Hit> hits;
-    std::vector<Hit> unsorted;  // scratch, kept between updates with its capacity
-    std::vector<int> line_start;  // scratch for the counting sort by line
+    std::vector<int> line_start;  // the counting sort's, then the end of each line's hits
   };
   void crossings_of(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, Crossings& out) const;
   // Adds the inside intervals of c's scan lines in lattice columns [column_lo, column_hi)
