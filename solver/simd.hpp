@@ -46,6 +46,23 @@ inline void store_streaming(double* p, vdouble v) {
 #endif
 }
 
+// One cache line of doubles (8, 64-byte aligned at p and at line) with non-temporal
+// stores, its parts back to back: vectors narrower than a line, streamed one per row
+// stream, leave many lines half written in the write-combining buffers, and each then
+// costs a read and a write (store_line_streaming for floats below).
+inline void store_line_streaming(double* p, const double* line) {
+#if defined(__AVX512F__)
+  _mm512_stream_pd(p, _mm512_load_pd(line));
+#elif defined(__AVX__)
+  _mm256_stream_pd(p, _mm256_load_pd(line));
+  _mm256_stream_pd(p + 4, _mm256_load_pd(line + 4));
+#elif defined(__SSE2__)
+  for (int i = 0; i < 8; i += 2) _mm_stream_pd(p + i, _mm_load_pd(line + i));
+#else
+  std::memcpy(p, line, 8 * sizeof(double));
+#endif
+}
+
 // Floats in the same lanes as vdouble (single-precision storage): loaded widened to double,
 // stored narrowed from it.
 using vfloat = float __attribute__((vector_size(width * sizeof(float))));

@@ -20,8 +20,9 @@ using namespace d3q19;
 
 namespace {
 
-// Floats in a 64-byte cache line (the rows of float storage are whole lines).
+// Floats and doubles in a 64-byte cache line (the rows of the populations are whole lines).
 constexpr int kFloatsPerLine = 16;
+constexpr int kDoublesPerLine = 8;
 
 // Read, keep in all cache levels (locality 3: a non-temporal hint was 30 % slower).
 inline void prefetch(const void* p) { __builtin_prefetch(p, 0, 3); }
@@ -52,7 +53,9 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   set_prefetch_distance(config.prefetch_distance);
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
   component_stride_ = component_stride(nodes_);
-  row_length_ = whole_vectors(static_cast<std::size_t>(config.nz));
+  // Rows of whole cache lines, so that the update streams whole lines whatever the vector
+  // width (with 4 doubles per vector, half-line streaming stores made it five times slower).
+  row_length_ = (static_cast<std::size_t>(config.nz) + kDoublesPerLine - 1) / kDoublesPerLine * kDoublesPerLine;
   // The population arrays lie three cache lines apart modulo 4 KiB. When the lattice is a
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
   // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md).
@@ -143,11 +146,14 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
   const double* fx = force_.data() + row;
   const double* fy = force_.data() + component_stride_ + row;
   const double* fz = force_.data() + 2 * component_stride_ + row;
-  // Float storage: the narrowed chunks of a cache line are gathered here, then streamed as
-  // whole lines (simd::store_line_streaming).
-  constexpr int chunks_per_line = kFloatsPerLine / W;
-  alignas(64) float stage[shifted ? Q : 1][kFloatsPerLine];
-  // Every padded row starts aligned (stride_ and row_length_ are multiples of W).
+  // The chunks of a cache line are gathered here (narrowed, for float storage), then
+  // streamed as whole lines (simd::store_line_streaming); vectors of a whole line of
+  // doubles go straight out.
+  constexpr int per_line = shifted ? kFloatsPerLine : kDoublesPerLine;
+  constexpr int chunks_per_line = per_line / W;
+  constexpr bool staged = chunks_per_line > 1;
+  alignas(64) T stage[staged ? Q : 1][per_line];
+  // Every padded row starts on a cache line (stride_ and row_length_ are whole lines).
   using vmask = decltype(vdouble{} < vdouble{});
   vdouble lane_index;
   for (int l = 0; l < W; ++l) lane_index[l] = l;
@@ -202,9 +208,9 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
           for (int l = 0; z0 + l < nz; ++l) out_u[l] = accumulate ? out_u[l] + u[d][l] : u[d][l];
       }
     }
-    if constexpr (shifted) {
+    if constexpr (staged) {
       const int k = (z0 / W) % chunks_per_line;
-      for (int q = 0; q < Q; ++q) simd::store(stage[q] + k * W, f[q] - w[q]);
+      for (int q = 0; q < Q; ++q) simd::store(stage[q] + k * W, shifted ? f[q] - w[q] : f[q]);
       const int line_start = z0 - k * W;
       if (k == chunks_per_line - 1) {
         for (int q = 0; q < Q; ++q) simd::store_line_streaming(out[q] + line_start, stage[q]);
@@ -212,7 +218,7 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
         for (int q = 0; q < Q; ++q) std::copy(stage[q], stage[q] + (k + 1) * W, out[q] + line_start);
       }
     } else {
-      // Whole vectors into the padded, aligned rows (the padding lanes included).
+      // Whole lines into the padded, aligned rows (the padding lanes included).
       for (int q = 0; q < Q; ++q) simd::store_streaming(out[q] + z0, f[q]);
     }
   }

@@ -154,7 +154,7 @@ class FluidLattice {
   FluidConfig config_;
   std::size_t nodes_;
   std::size_t component_stride_;  // component_stride(nodes_)
-  std::size_t row_length_;  // nz rounded up to the SIMD width
+  std::size_t row_length_;  // nz rounded up to whole cache lines
   std::size_t stride_;      // distance between population arrays: nx * ny * row_length_, staggered
   std::int64_t steps_ = 0;
   AlignedVector<double> f_, f_next_;  // populations (double storage)
