@@ -7,10 +7,10 @@
 //
 // Layout: nodes ordered x-major, z fastest (n = (x * ny + y) * nz + z) in every per-node
 // field (viscosity, force, velocity). The populations are structure of arrays with each
-// row of nz nodes padded to a multiple of the SIMD width (row_length), so that every row
-// starts aligned: population q of node (x, y, z) at q * stride + (x * ny + y) *
-// row_length + z. Unpadded, rows start at every alignment when nz is not a multiple of
-// the width, and the update ran 2-3 times slower per node (docs/performance.md). One
+// row of nz nodes padded to whole cache lines (row_length), so that every row starts on a
+// line and is streamed in whole lines: population q of node (x, y, z) at q * stride +
+// (x * ny + y) * row_length + z. Unpadded, rows start at every alignment when nz is not a
+// multiple of the width, and the update ran 2-3 times slower per node (docs/performance.md). One
 // step is a fused pull-stream + TRT collision between two population arrays; the stored
 // populations are always post-collision.
 #include <array>
