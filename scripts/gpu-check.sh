@@ -4,7 +4,7 @@
 # cases (and the CPU path on the same host's cores), the capsule deformation against the
 # boundary-integral references, two dense library cases against their CPU results, then
 # anchor cases until the time is up. Run from the repository root:
-#   here:   cmake -S . -B build-cuda -DRBCAL_CUDA=ON -DRBCAL_NATIVE=OFF -DRBCAL_PYTHON=OFF
+#   here:   cmake -S . -B build-cuda -DRBCAL_CUDA=ON -DRBCAL_NATIVE=OFF -DRBCAL_MARCH=x86-64-v3 -DRBCAL_PYTHON=OFF
 #           cmake --build build-cuda --target rbcal device_tests
 #           bash scripts/device-batch.sh pack build-cuda/bin/rbcal build-cuda/bin/device_tests
 #   there:  bash scripts/gpu-check.sh [SECONDS] [ANCHOR...]
