@@ -31,9 +31,12 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("FluidLattice: " + what);
 }
 
-// n rounded up to a whole number of SIMD vectors: the padded row length, and the stride of
-// the checkpoints' unpadded population layout (node count rounded up).
-std::size_t whole_vectors(std::size_t n) { return (n + simd::width - 1) / simd::width * simd::width; }
+// n rounded up to a multiple of m.
+std::size_t round_up(std::size_t n, std::size_t m) { return (n + m - 1) / m * m; }
+
+// n rounded up to a whole number of SIMD vectors: the stride of the checkpoints' unpadded
+// population layout (node count rounded up).
+std::size_t whole_vectors(std::size_t n) { return round_up(n, simd::width); }
 
 // Equilibrium populations for density rho and velocity u (second order in u).
 void equilibrium(double rho, double ux, double uy, double uz, double* feq) {
@@ -53,22 +56,19 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   set_prefetch_distance(config.prefetch_distance);
   nodes_ = static_cast<std::size_t>(config.nx) * config.ny * config.nz;
   component_stride_ = component_stride(nodes_);
-  // Rows of whole cache lines, so that the update streams whole lines whatever the vector
-  // width (with 4 doubles per vector, half-line streaming stores made it five times slower).
-  row_length_ = (static_cast<std::size_t>(config.nz) + kDoublesPerLine - 1) / kDoublesPerLine * kDoublesPerLine;
+  // Rows of whole cache lines (8 doubles or 16 floats), so that the update streams whole
+  // lines whatever the vector width (with 4 doubles per vector, half-line streaming stores
+  // made it five times slower).
+  const bool single = config.single_precision;
+  row_length_ = round_up(static_cast<std::size_t>(config.nz), single ? kFloatsPerLine : kDoublesPerLine);
   // The population arrays lie three cache lines apart modulo 4 KiB. When the lattice is a
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
-  // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md).
-  stride_ = staggered(static_cast<std::size_t>(config.nx) * config.ny * row_length_, 3);
-  if (config.single_precision) {
-    // Float rows of whole cache lines (16 floats), so that the update streams whole lines;
-    // the same staggering in bytes (1024 floats to 4 KiB, 16 to a line).
-    row_length_ = (static_cast<std::size_t>(config.nz) + kFloatsPerLine - 1) / kFloatsPerLine * kFloatsPerLine;
-    const std::size_t n = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
-    stride_ = (n + 1023) / 1024 * 1024 + 3 * kFloatsPerLine;
-  }
+  // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md). Floats:
+  // the same in bytes (1024 floats to 4 KiB, 16 to a line).
+  const std::size_t padded_nodes = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
+  stride_ = single ? round_up(padded_nodes, 1024) + 3 * kFloatsPerLine : staggered(padded_nodes, 3);
   // Zeros: the padding lanes start finite (they never feed a node).
-  if (config.single_precision) {
+  if (single) {
     h_.resize(Q * stride_);
     h_next_.resize(Q * stride_);
   } else {
