@@ -18,6 +18,14 @@
 #include "solver/device/host_device.hpp"
 #include "solver/fluid/d3q19.hpp"
 
+// The collision's lambdas inlined into the update on the CPU: called out of line, the
+// populations and the moments went through memory for every pair.
+#if defined(__CUDACC__)
+#define RBCAL_TRT_INLINE
+#else
+#define RBCAL_TRT_INLINE __attribute__((always_inline))
+#endif
+
 namespace rbcal::solver {
 
 namespace trt_detail {
@@ -54,7 +62,7 @@ RBCAL_HD inline T first_moment(const T* f, std::integer_sequence<int, q...>) {
 // Collides the populations f[0..18] of one node (or one vector of nodes) in place; with
 // u_out, also stores the velocity u that entered the collision (x, y, z).
 template <class T>
-RBCAL_HD inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = nullptr) {
+RBCAL_HD RBCAL_TRT_INLINE inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* u_out = nullptr) {
   using namespace d3q19;
   using namespace trt_detail;
   constexpr auto all = std::make_integer_sequence<int, Q>{};
@@ -84,7 +92,7 @@ RBCAL_HD inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* 
   constexpr double w0 = w[0];
   f[0] = f[0] - omega_plus * (f[0] - w0 * base) - force_plus * (w0 * 3.0) * uf;
 
-  auto pair = [&]<int q>(std::integral_constant<int, q>) {
+  auto pair = [&]<int q>(std::integral_constant<int, q>) RBCAL_TRT_INLINE {
     constexpr int qb = q + 1;  // opposite direction (see d3q19.hpp ordering)
     const T cu = dot_c<q>(ux, uy, uz);
     const T cf = dot_c<q>(fx, fy, fz);
@@ -100,7 +108,7 @@ RBCAL_HD inline void collide_trt(T* f, T nu, double magic, T fx, T fy, T fz, T* 
     f[q] = f[q] + (d_plus + d_minus);
     f[qb] = f[qb] + (d_plus - d_minus);
   };
-  [&]<int... p>(std::integer_sequence<int, p...>) {
+  [&]<int... p>(std::integer_sequence<int, p...>) RBCAL_TRT_INLINE {
     (pair(std::integral_constant<int, 2 * p + 1>{}), ...);
   }(std::make_integer_sequence<int, (Q - 1) / 2>{});
 }
