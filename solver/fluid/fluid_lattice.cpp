@@ -167,7 +167,8 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
     // end of the row.
     const int real = std::min(W, nz - z0);  // lanes that are nodes
     // Interior chunks (most of a row) cross no seam: their loads unrolled, without the
-    // seam's tests (one thread 6-8 % faster at four doubles per vector, 2-5 % at eight).
+    // seam's tests (one thread 6-8 % faster at four doubles per vector; within the noise at
+    // eight). The first and last chunks take the loop after.
     const bool interior = !first && !last;
     if (interior) {
 #pragma GCC unroll 19
