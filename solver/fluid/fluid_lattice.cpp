@@ -64,9 +64,9 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   // The population arrays lie three cache lines apart modulo 4 KiB. When the lattice is a
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
   // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md). Floats:
-  // the same in bytes (1024 floats to 4 KiB, 16 to a line).
+  // the same in bytes.
   const std::size_t padded_nodes = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
-  stride_ = single ? round_up(padded_nodes, 1024) + 3 * kFloatsPerLine : staggered(padded_nodes, 3);
+  stride_ = staggered(padded_nodes, 3, single ? kFloatsPerLine : kDoublesPerLine);
   // Zeros: the padding lanes start finite (they never feed a node).
   if (single) {
     h_.resize(Q * stride_);
@@ -168,31 +168,31 @@ void FluidLattice::update_row(const T* cur, T* next, int x, int y, double* const
     const int real = std::min(W, nz - z0);  // lanes that are nodes
     // Interior chunks (most of a row) cross no seam: their loads unrolled, without the
     // seam's tests (one thread 6-8 % faster at four doubles per vector; within the noise at
-    // eight). The first and last chunks take the loop after.
-    const bool interior = !first && !last;
-    if (interior) {
+    // eight). The first and last chunks take the seam into account.
+    if (!first && !last) {
 #pragma GCC unroll 19
       for (int q = 0; q < Q; ++q) {
         f[q] = simd::load(in[q] + z0) + add[q];
         if constexpr (ahead > 0) prefetch(in[q] + z0 + ahead);
       }
-    }
-    for (int q = 0; !interior && q < Q; ++q) {
-      if (first && shift[q] == 1) {
-        alignas(simd::bytes) double lanes[W];
-        lanes[0] = src[q][nz - 1];
-        std::copy(src[q], src[q] + W - 1, lanes + 1);
-        f[q] = simd::load(lanes) + add[q];
-      } else if (last && shift[q] == -1) {
-        alignas(simd::bytes) double lanes[W];
-        std::copy(src[q] + z0 + 1, src[q] + z0 + real, lanes);
-        lanes[real - 1] = src[q][0];
-        std::fill(lanes + real, lanes + W, shifted ? 0.0 : w[q]);  // stored fluid at rest
-        f[q] = simd::load(lanes) + add[q];
-      } else {
-        f[q] = simd::load(in[q] + z0) + add[q];
+    } else {
+      for (int q = 0; q < Q; ++q) {
+        if (first && shift[q] == 1) {
+          alignas(simd::bytes) double lanes[W];
+          lanes[0] = src[q][nz - 1];
+          std::copy(src[q], src[q] + W - 1, lanes + 1);
+          f[q] = simd::load(lanes) + add[q];
+        } else if (last && shift[q] == -1) {
+          alignas(simd::bytes) double lanes[W];
+          std::copy(src[q] + z0 + 1, src[q] + z0 + real, lanes);
+          lanes[real - 1] = src[q][0];
+          std::fill(lanes + real, lanes + W, shifted ? 0.0 : w[q]);  // stored fluid at rest
+          f[q] = simd::load(lanes) + add[q];
+        } else {
+          f[q] = simd::load(in[q] + z0) + add[q];  // the populations that cross no seam
+        }
+        if constexpr (ahead > 0) prefetch(in[q] + z0 + ahead);
       }
-      if constexpr (ahead > 0) prefetch(in[q] + z0 + ahead);
     }
     if constexpr (ahead > 0)
       for (const double* p : {nu, fx, fy, fz}) prefetch(p + z0 + ahead);

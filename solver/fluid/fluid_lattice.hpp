@@ -87,9 +87,13 @@ class FluidLattice {
   // multiple of 4 KiB apart (48 x 64 x 48: 24 KiB), unstaggered components put every
   // stencil row of all three in the same L1 set.
   static std::size_t component_stride(std::size_t nodes) { return staggered(nodes, 5); }
-  // n doubles rounded up to 4 KiB (one round of L1 sets), plus `lines` cache lines: arrays
-  // laid out this far apart start in different L1 sets.
-  static std::size_t staggered(std::size_t n, std::size_t lines) { return (n + 511) / 512 * 512 + 8 * lines; }
+  // n elements, per_line to a cache line (8 doubles, 16 floats), rounded up to 4 KiB (one
+  // round of L1 sets), plus `lines` cache lines: arrays laid out this far apart start in
+  // different L1 sets.
+  static std::size_t staggered(std::size_t n, std::size_t lines, std::size_t per_line = 8) {
+    const std::size_t four_kib = 64 * per_line;
+    return (n + four_kib - 1) / four_kib * four_kib + per_line * lines;
+  }
   void clear_force();
 
   // Puts a node at equilibrium so that moments(node) returns (rho, u) under the
