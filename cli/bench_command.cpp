@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -96,6 +97,9 @@ void run_case_bench(const BenchOptions& o) {
   }
 }
 
+// Rounds whose streaming-store triads differ by more than this are reported as unsteady.
+constexpr double kSteadyBandwidthRatio = 1.3;
+
 void run_bench(const BenchOptions& o) {
   if (o.box.size() != 3 || o.box[0] < 1 || o.box[1] < 1 || o.box[2] < 1)
     throw std::invalid_argument("--box needs three positive node counts nx,ny,nz");
@@ -128,7 +132,10 @@ void run_bench(const BenchOptions& o) {
   std::printf("  %d alternating rounds; medians over rounds\n", o.rounds);
   std::printf("  STREAM triad (3 x %.0f MiB)      %8.2f GB/s  ordinary stores, 24 B/element counted\n",
               o.triad_mib, r.median_triad * 1e-9);
-  std::printf("  STREAM triad, streaming stores  %8.2f GB/s\n", r.median_triad_streaming * 1e-9);
+  const auto [slowest, fastest] =
+      std::minmax_element(r.triad_streaming_bytes_per_s.begin(), r.triad_streaming_bytes_per_s.end());
+  std::printf("  STREAM triad, streaming stores  %8.2f GB/s  rounds %.1f-%.1f GB/s\n", r.median_triad_streaming * 1e-9,
+              *slowest * 1e-9, *fastest * 1e-9);
   std::printf("  lattice update                  %8.2f MLUPS %d x %d x %d, D3Q19 TRT, variable viscosity, Guo force, %s populations\n",
               r.median_updates * 1e-6, o.box[0], o.box[1], o.box[2], o.precision.c_str());
   std::printf("                                            prefetch %d populations ahead%s\n", o.prefetch,
@@ -145,6 +152,12 @@ void run_bench(const BenchOptions& o) {
               r.anonymous_bytes > 0 ? 100.0 * r.huge_page_bytes / r.anonymous_bytes : 0.0);
   std::printf("  roofline fraction  %.1f %% of STREAM triad (target >= 60 %%), %.1f %% of the streaming-store triad\n",
               100.0 * r.fraction_of_triad, 100.0 * r.fraction_of_streaming_triad);
+  // Some shared hosts' memory bandwidth swings between rounds (one went from 18 to 76 GB/s
+  // within a run); then one run's fraction is a loose figure.
+  if (*fastest > kSteadyBandwidthRatio * *slowest)
+    std::printf("  warning: the streaming-store triad varied %.1fx between rounds (this host's memory bandwidth is\n"
+                "           not steady): compare the fractions of several runs, or more --rounds\n",
+                *fastest / *slowest);
 
   if (!o.json_path.empty()) {
     nlohmann::json j;

@@ -91,8 +91,9 @@ for threads in (2, 1):
         mlups = [median_mlups(j) for j in r]
         frac = [100 * j["roofline_fraction_streaming_triad"] for j in r]
         huge = [100 * j["huge_page_bytes"] / j["anonymous_bytes"] for j in r if j["anonymous_bytes"] > 0]
+        triad = [1e-9 * x for j in r for x in j["triad_streaming_bytes_per_s"]]
         print(f"fluid update, {threads} thread(s), {precision}: {span(mlups, '{:.1f}')} MLUPS, "
-              f"{span(frac, '{:.0f}')} % of the streaming-store triad"
+              f"{span(frac, '{:.0f}')} % of the streaming-store triad ({span(triad, '{:.0f}')} GB/s over the rounds)"
               + (f", {span(huge, '{:.0f}')} % of memory in huge pages" if huge else ""))
 scan = []
 for distance in (0, 16, 32, 64, 128):
