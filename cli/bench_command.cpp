@@ -152,7 +152,7 @@ void run_bench(const BenchOptions& o) {
               r.anonymous_bytes > 0 ? 100.0 * r.huge_page_bytes / r.anonymous_bytes : 0.0);
   std::printf("  roofline fraction  %.1f %% of STREAM triad (target >= 60 %%), %.1f %% of the streaming-store triad\n",
               100.0 * r.fraction_of_triad, 100.0 * r.fraction_of_streaming_triad);
-  // Some shared hosts' memory bandwidth swings between rounds (one went from 18 to 76 GB/s
+  // Some shared hosts' memory bandwidth swings between rounds (one went from 18 to 74 GB/s
   // within a run); then one run's fraction is a loose figure.
   if (*fastest > kSteadyBandwidthRatio * *slowest)
     std::printf("  warning: the streaming-store triad varied %.1fx between rounds (this host's memory bandwidth is\n"
