@@ -60,13 +60,14 @@ FluidLattice::FluidLattice(const FluidConfig& config) : config_(config) {
   // lines whatever the vector width (with 4 doubles per vector, half-line streaming stores
   // made it five times slower).
   const bool single = config.single_precision;
-  row_length_ = round_up(static_cast<std::size_t>(config.nz), single ? kFloatsPerLine : kDoublesPerLine);
+  const std::size_t per_line = single ? kFloatsPerLine : kDoublesPerLine;
+  row_length_ = round_up(static_cast<std::size_t>(config.nz), per_line);
   // The population arrays lie three cache lines apart modulo 4 KiB. When the lattice is a
   // multiple of 4 KiB (most are), the 19 streams of a row otherwise share a few L1 sets;
   // staggered, the update is 7 % faster on 256 x 160 x 256 (docs/performance.md). Floats:
   // the same in bytes.
   const std::size_t padded_nodes = static_cast<std::size_t>(config.nx) * config.ny * row_length_;
-  stride_ = staggered(padded_nodes, 3, single ? kFloatsPerLine : kDoublesPerLine);
+  stride_ = staggered(padded_nodes, 3, per_line);
   // Zeros: the padding lanes start finite (they never feed a node).
   if (single) {
     h_.resize(Q * stride_);
