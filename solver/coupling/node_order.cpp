@@ -57,9 +57,13 @@ void sort_nodes(KernelKind kernel, const std::vector<std::vector<Vec3>>& positio
         sorted.begin());
   }
   order.nodes.resize(total);
+  order.sorted_place.resize(total);
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < static_cast<long>(total); ++i)
-    order.nodes[i] = order.mesh_order[index_of_record(sorted[i])];
+  for (long i = 0; i < static_cast<long>(total); ++i) {
+    const std::size_t in_mesh_order = index_of_record(sorted[i]);
+    order.nodes[i] = order.mesh_order[in_mesh_order];
+    order.sorted_place[in_mesh_order] = static_cast<std::uint32_t>(i);
+  }
   order.kernel = kernel;
   order.nx = nx;
   order.ny = ny;

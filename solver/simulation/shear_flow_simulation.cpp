@@ -207,13 +207,13 @@ void ShearFlowSimulation::move_cells(double dt) {
   constexpr std::size_t block = 64;  // nodes interpolated together (interpolate_sorted)
   const long blocks = static_cast<long>((total + block - 1) / block);
   double fastest = 0.0;  // squared node speed
+  order_.velocity.resize(total);
 #pragma omp parallel for schedule(static) reduction(max : fastest)
   for (long k = 0; k < blocks; ++k) {
     const std::size_t begin = static_cast<std::size_t>(k) * block, end = std::min(total, begin + block);
     Vec3 sampled[block];
     interpolate_sorted(order_, begin, end, u, sampled);
     for (std::size_t g = begin; g < end; ++g) {
-      const auto [cell, m] = order_.nodes[g];
       const Vec3& x = order_.position[g];
       const Vec3 u1 = sampled[g - begin] / steps;
       Vec3 velocity = u1;
@@ -224,10 +224,8 @@ void ShearFlowSimulation::move_cells(double dt) {
         const Vec3 u4 = velocity_at(x + dt * u3);
         velocity = (u1 + 2.0 * u2 + 2.0 * u3 + u4) / 6.0;
       }
-      // The speed from the register, not read back from v_ (written in mesh order, a
-      // scattered store that the read-back had to wait for).
       fastest = std::max(fastest, nan_as_infinite(velocity.squaredNorm()));
-      v_[cell][m] = velocity;
+      order_.velocity[g] = velocity;
     }
   }
   // The explicit coupling's instability shows first as runaway node speeds. Caught here,
@@ -247,9 +245,16 @@ void ShearFlowSimulation::move_cells(double dt) {
 #pragma omp parallel for schedule(dynamic) reduction(max : largest_shift)
   for (std::size_t i = 0; i < x_.size(); ++i) {
     Vec3* const x = x_[i].data();  // raw pointers: the vectors' data are not reloaded per node
-    const Vec3* const v = v_[i].data();
+    Vec3* const v = v_[i].data();
+    const std::uint32_t* const place = order_.sorted_place.data() + order_.cell_first[i];
+    const Vec3* const sorted = order_.velocity.data();
     const std::size_t n = x_[i].size();
-    for (std::size_t m = 0; m < n; ++m) x[m] += dt * v[m];
+    constexpr std::size_t gather_ahead = 8;
+    for (std::size_t m = 0; m < n; ++m) {
+      if (m + gather_ahead < n) __builtin_prefetch(sorted + place[m + gather_ahead], 0, 3);
+      v[m] = sorted[place[m]];
+      x[m] += dt * v[m];
+    }
     double shift = 0.0;
     correct_volume(x_[i], membrane_->reference().triangles, membrane_->reference_volume(), &shift);
     largest_shift = std::max(largest_shift, nan_as_infinite(shift));
