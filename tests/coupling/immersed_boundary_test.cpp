@@ -353,8 +353,9 @@ TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
 // stencil (make_stencil), in the same order: slab by slab as the schedule runs them, node by
 // node within a slab. Nodes on lattice coordinates (zero weights), in runs of four, across
 // the periodic x and z boundaries, next to the walls (weights renormalised) and whole boxes
-// away in x and z (unwrapped positions) included. A support of whole z rows adds
-// w_xy (w_z f) to each row, one across the z seam (w_xy w_z) f node by node (spread_one).
+// away in x and z (unwrapped positions) included. Every support adds w_xy (w_z f) to each of
+// its rows, one across the periodic z seam too (its rows read as the row's last four nodes
+// and its first four).
 TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   const int nx = 24, ny = 16, nz = 12;
   FluidConfig cfg;
@@ -392,7 +393,7 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
           for (int k = 0; k < 4; ++k)
             for (int d = 0; d < 3; ++d) {
               double& at = expected[d * fluid.node_count() + fluid.index(st.x[a], st.y[b], st.z[k])];
-              at = rows ? at + wab * (st.wz[k] * order.force[g][d]) : at + (wab * st.wz[k]) * order.force[g][d];
+              at += wab * (st.wz[k] * order.force[g][d]);
             }
         }
     }
