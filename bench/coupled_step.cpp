@@ -94,6 +94,9 @@ CoupledStepTimings time_coupled_step(const solver::SimulationCase& c, const std:
   out.interpolation = median_of([](const CoupledStepTimings& r) { return r.interpolation; });
   out.whole_median = median_of([](const CoupledStepTimings& r) { return r.whole(); });
   if (plain) {
+    constexpr int kernel_passes = 21;
+    out.kernels = time_coupling_kernels(c.kernel, sim.positions(), sim.membrane_forces(), sim.fluid().config(),
+                                        kernel_passes);
     out.plain_fluid = median_of([](const CoupledStepTimings& r) { return r.plain_fluid; });
     out.ratio_median = median_of([](const CoupledStepTimings& r) { return r.whole() / r.plain_fluid; });
     return out;
@@ -156,6 +159,11 @@ std::string CoupledStepTimings::brief_report() const {
               steps_to_40 * free_running / 60.0);
   }
   s += printf_string("  membrane + coupling / fluid  %9.2f (target <= 1)\n", coupling() / fluid);
+  if (kernels.nodes > 0)
+    s += printf_string("  per node, one thread         spreading %.1f ns, interpolation %.1f ns (median of %d passes over the\n"
+                       "                               %zu nodes; fastest %.1f and %.1f)\n",
+                       kernels.spreading_median, kernels.interpolation_median, kernels.passes, kernels.nodes,
+                       kernels.spreading_fastest, kernels.interpolation_fastest);
   return s;
 }
 
@@ -172,6 +180,11 @@ nlohmann::json CoupledStepTimings::to_json() const {
           {"free_running_seconds_per_step", free_running},
           {"device", device},
           {"device_copy_bytes_per_s", copy_bandwidth},
+          {"kernel_ns_per_node", {{"passes", kernels.passes},
+                                  {"spreading", kernels.spreading_median},
+                                  {"interpolation", kernels.interpolation_median},
+                                  {"spreading_fastest", kernels.spreading_fastest},
+                                  {"interpolation_fastest", kernels.interpolation_fastest}}},
           {"seconds", {{"fluid", fluid * n},
                        {"membrane_forces", membrane_forces * n},
                        {"ordering", ordering * n},

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/coupling_kernels.hpp"
 #include "solver/device/device_stepper.hpp"
 #include "solver/simulation/simulation_case.hpp"
 
@@ -34,6 +35,9 @@ struct CoupledStepTimings {
   // are medians over rounds, and so are the whole step and the ratio (of each round's own).
   int rounds = 1;
   double whole_median = 0, ratio_median = 0;
+  // CPU: the spreading and interpolation kernels alone on the cells after the timed steps,
+  // per node on one thread (coupling_kernels.hpp).
+  CouplingKernelTimings kernels;
   double whole() const { return fluid + membrane_forces + ordering + spreading + indicator + interpolation; }
   double ratio() const { return ratio_median > 0 ? ratio_median : whole() / plain_fluid; }  // whole / plain fluid
   double coupling() const { return whole() - fluid; }
@@ -43,7 +47,7 @@ struct CoupledStepTimings {
 };
 
 // Two warm-up steps, then `rounds` rounds of `steps` timed steps of the case and (CPU) as
-// many plain fluid steps. Throws std::runtime_error naming the case when it is not stable. On
+// many plain fluid steps, then (CPU) the coupling kernels per node. Throws std::runtime_error naming the case when it is not stable. On
 // the device backend the parts are timed with a synchronisation after each, then the step
 // again without, and the guards run once at the end. A checkpoint of the case (rbcal simulate
 // --max-steps writes one) is the state to start from: a run's cells, which shear carries
