@@ -32,8 +32,13 @@ CouplingKernelTimings time_coupling_kernels(solver::KernelKind kernel, const std
   const double* const u[3] = {field.data(), field.data() + stride, field.data() + 2 * stride};
   std::vector<solver::Vec3> sampled(total);
 
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
+  // One thread while timing, the caller's again afterwards (also when a kernel throws).
+  struct OneThread {
+    int threads = omp_get_max_threads();
+    OneThread() { omp_set_num_threads(1); }
+    ~OneThread() { omp_set_num_threads(threads); }
+  };
+  const OneThread one_thread;
   std::vector<double> spreading, interpolation;
   constexpr std::size_t block = 64;  // nodes per call, as the solver's membrane update
   const double per_node = 1e9 / static_cast<double>(total);
@@ -45,7 +50,6 @@ CouplingKernelTimings time_coupling_kernels(solver::KernelKind kernel, const std
         solver::interpolate_sorted(order, b, std::min(total, b + block), u, sampled.data() + b);
     }));
   }
-  omp_set_num_threads(threads);
   CouplingKernelTimings out;
   out.nodes = total;
   out.passes = passes;
