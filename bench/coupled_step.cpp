@@ -169,7 +169,7 @@ std::string CoupledStepTimings::brief_report() const {
 
 nlohmann::json CoupledStepTimings::to_json() const {
   const double n = static_cast<double>(steps);
-  return {{"steps", steps},
+  nlohmann::json j = {{"steps", steps},
           {"rounds", rounds},
           {"whole_over_plain_fluid", ratio()},
           {"indicator_builds", indicator_builds},
@@ -180,17 +180,20 @@ nlohmann::json CoupledStepTimings::to_json() const {
           {"free_running_seconds_per_step", free_running},
           {"device", device},
           {"device_copy_bytes_per_s", copy_bandwidth},
-          {"kernel_ns_per_node", {{"passes", kernels.passes},
-                                  {"spreading", kernels.spreading_median},
-                                  {"interpolation", kernels.interpolation_median},
-                                  {"spreading_fastest", kernels.spreading_fastest},
-                                  {"interpolation_fastest", kernels.interpolation_fastest}}},
           {"seconds", {{"fluid", fluid * n},
                        {"membrane_forces", membrane_forces * n},
                        {"ordering", ordering * n},
                        {"spreading", spreading * n},
                        {"indicator", indicator * n},
                        {"interpolation", interpolation * n}}}};
+  if (kernels.nodes > 0)
+    j["kernel_ns_per_node"] = {{"nodes", kernels.nodes},
+                               {"passes", kernels.passes},
+                               {"spreading", kernels.spreading_median},
+                               {"interpolation", kernels.interpolation_median},
+                               {"spreading_fastest", kernels.spreading_fastest},
+                               {"interpolation_fastest", kernels.interpolation_fastest}};
+  return j;
 }
 
 }  // namespace rbcal::bench

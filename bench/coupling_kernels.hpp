@@ -2,8 +2,9 @@
 // The immersed boundary's two kernels on their own, per membrane node: the spreading of the
 // nodes' forces onto the lattice and the interpolation of a velocity field at the nodes, over
 // a case's cells as they stand, on one thread. Their cost per node depends on the core, not
-// on the memory bandwidth whose swings blur the coupled step's parts on shared hosts, so it
-// compares builds and changes to these kernels within a few per cent.
+// on the memory bandwidth whose swings blur the coupled step's parts on shared hosts, so
+// alternating runs of two builds compare these kernels within a few per cent (over hours a
+// shared host's cores drift too).
 #include <cstddef>
 #include <vector>
 

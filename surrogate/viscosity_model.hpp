@@ -151,9 +151,11 @@ class ViscosityModel {
   void check_names(const NuisanceValues& values) const {
     if (values.empty()) return;
     const std::vector<ModelNuisance> known = nuisances();
-    for (const auto& [name, value] : values.entries())
+    for (const auto& entry : values.entries()) {
+      const std::string& name = entry.first;  // not a structured binding: clang 14 cannot capture one
       if (std::none_of(known.begin(), known.end(), [&](const ModelNuisance& n) { return n.name == name; }))
         throw std::invalid_argument("the model has no nuisance parameter '" + name + "'");
+    }
   }
 };
 

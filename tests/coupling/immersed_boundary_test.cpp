@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 #include <stdexcept>
 #include <utility>
 
@@ -283,8 +284,11 @@ TEST(NodeOrder, SortsStablyByTheSupportStartOnSmallAndLargeLattices) {
 // and z boundaries, for nodes several boxes away in x and z (a run's positions are unwrapped:
 // shear carries cells out of the box), supports starting exactly on a multiple of the box
 // (the wrap's division is exact there), and for a last block shorter than the others.
-TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
-  const int nx = 20, ny = 16, nz = 12;
+// Rows of 12 and 8 nodes (a seam support's two row ends apart and adjacent) and of 6 (they
+// overlap).
+static void expect_sorted_interpolation_equals_own_stencils(int nz) {
+  SCOPED_TRACE("nz " + std::to_string(nz));
+  const int nx = 20, ny = 16;
   const std::size_t nodes = static_cast<std::size_t>(nx) * ny * nz;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> value(-1.0, 1.0);
@@ -338,6 +342,10 @@ TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
   EXPECT_GT(away, 50);
 }
 
+TEST(Interpolation, AtSortedNodesEqualsEachNodesOwnStencil) {
+  for (const int nz : {12, 8, 6}) expect_sorted_interpolation_equals_own_stencils(nz);
+}
+
 // A kept order serves only the cells it sorted: other cell sizes are refused.
 TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
   std::vector<std::vector<Vec3>> x = {{Vec3(2, 3, 4), Vec3(5, 6, 7)}, {Vec3(8, 6, 4)}};
@@ -356,8 +364,11 @@ TEST(NodeOrder, GatherRefusesCellsOfOtherSizes) {
 // away in x and z (unwrapped positions) included. Every support adds w_xy (w_z f) to each of
 // its rows, one across the periodic z seam too (its rows read as the row's last four nodes
 // and its first four).
-TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
-  const int nx = 24, ny = 16, nz = 12;
+// Rows of 12 and 8 nodes take the seam supports' two row ends; rows of 6, where they would
+// overlap, the node-by-node sum (w_xy w_z) f.
+static void expect_sorted_spreading_adds_what_each_node_adds(int nz) {
+  SCOPED_TRACE("nz " + std::to_string(nz));
+  const int nx = 24, ny = 16;
   FluidConfig cfg;
   cfg.nx = nx;
   cfg.ny = ny;
@@ -393,7 +404,8 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
           for (int k = 0; k < 4; ++k)
             for (int d = 0; d < 3; ++d) {
               double& at = expected[d * fluid.node_count() + fluid.index(st.x[a], st.y[b], st.z[k])];
-              at += wab * (st.wz[k] * order.force[g][d]);
+              at = rows || nz >= 8 ? at + wab * (st.wz[k] * order.force[g][d])
+                                   : at + (wab * st.wz[k]) * order.force[g][d];
             }
         }
     }
@@ -408,4 +420,8 @@ TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
   EXPECT_EQ(differing, 0u);
   EXPECT_GT(walls, 20);  // both kinds of edge were met
   EXPECT_GT(seams, 50);
+}
+
+TEST(Spreading, SortedNodesAddWhatEachNodeAddsAlone) {
+  for (const int nz : {12, 8, 6}) expect_sorted_spreading_adds_what_each_node_adds(nz);
 }
