@@ -215,59 +215,74 @@ void spread_rows(const Peskin4Block& b, int i, const Vec3* force, double* const 
     }
 }
 
-// interpolate_rows for a node on the seam path (on_seam_path == K): interpolate_seam from the
-// block's weights.
-template <int K>
-Vec3 interpolate_seam_rows(const Peskin4Block& b, int i, const double* const u[3], int nx, int ny, int nz) {
-  std::size_t planes[4];
-  x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, planes);
-  const std::size_t y0 = static_cast<std::size_t>(b.first[1][i]) * nz;
+// A support across the z seam (its first K z nodes end the row), row by row: for_each_row(add)
+// calls add(w_xy, row) for each of its (x, y) rows, row the lattice index of the row's z = 0
+// node. The interpolation sums each lane of the row ends as a support of whole rows does
+// (interpolate_rows), then moves the lanes into the support's.
+template <int K, class ForEachRow>
+Vec3 interpolate_row_ends(ForEachRow&& for_each_row, const v4d& wz, const double* const u[3], int nz) {
   const double* const u0 = u[0];
   const double* const u1 = u[1];
   const double* const u2 = u[2];
   v4d t0 = {}, t1 = {}, t2 = {}, h0 = {}, h1 = {}, h2 = {};
-  for (int a = 0; a < 4; ++a)
-    for (int c = 0; c < 4; ++c) {
-      const double wab = b.w[0][a][i] * b.w[1][c][i];
-      const std::size_t row = planes[a] + y0 + c * static_cast<std::size_t>(nz), tail = row + nz - 4;
-      t0 += wab * load4(u0 + tail);
-      t1 += wab * load4(u1 + tail);
-      t2 += wab * load4(u2 + tail);
-      h0 += wab * load4(u0 + row);
-      h1 += wab * load4(u1 + row);
-      h2 += wab * load4(u2 + row);
-    }
-  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
+  for_each_row([&](double wab, std::size_t row) {
+    const std::size_t tail = row + nz - 4;
+    t0 += wab * load4(u0 + tail);
+    t1 += wab * load4(u1 + tail);
+    t2 += wab * load4(u2 + tail);
+    h0 += wab * load4(u0 + row);
+    h1 += wab * load4(u1 + row);
+    h2 += wab * load4(u2 + row);
+  });
   const v4d v0 = support_lanes<K>(t0, h0) * wz, v1 = support_lanes<K>(t1, h1) * wz, v2 = support_lanes<K>(t2, h2) * wz;
   return Vec3((v0[0] + v0[1]) + (v0[2] + v0[3]), (v1[0] + v1[1]) + (v1[2] + v1[3]), (v2[0] + v2[1]) + (v2[2] + v2[3]));
 }
 
-// spread_rows for one node on the seam path (on_seam_path == K): spread_seam from the
-// block's weights.
-template <int K>
-void spread_seam_rows(const Peskin4Block& b, int i, const Vec3& force, double* const f[3], int nx, int ny, int nz) {
-  std::size_t planes[4];
-  x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, planes);
-  const std::size_t y0 = static_cast<std::size_t>(b.first[1][i]) * nz;
+// The spreading of one such node: w_xy (w_z f) into its lanes of each row end, as a support of
+// whole rows adds it (spread_rows, spread_one); the row ends' other lanes get + 0.0. Rows of at
+// least 8 nodes, so that the two ends do not overlap.
+template <int K, class ForEachRow>
+void spread_row_ends(ForEachRow&& for_each_row, const v4d& wz, const Vec3& force, double* const f[3], int nz) {
   double* const f0 = f[0];
   double* const f1 = f[1];
   double* const f2 = f[2];
-  const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
   const v4d fz0 = wz * force[0], fz1 = wz * force[1], fz2 = wz * force[2];
   const v4d t0 = tail_lanes<K>(fz0), t1 = tail_lanes<K>(fz1), t2 = tail_lanes<K>(fz2);
   const v4d h0 = head_lanes<K>(fz0), h1 = head_lanes<K>(fz1), h2 = head_lanes<K>(fz2);
-  for (int a = 0; a < 4; ++a)
-    for (int c = 0; c < 4; ++c) {
-      const double wab = b.w[0][a][i] * b.w[1][c][i];
-      const std::size_t row = planes[a] + y0 + c * static_cast<std::size_t>(nz), tail = row + nz - 4;
-      store4(f0 + tail, load4(f0 + tail) + wab * t0);
-      store4(f1 + tail, load4(f1 + tail) + wab * t1);
-      store4(f2 + tail, load4(f2 + tail) + wab * t2);
-      store4(f0 + row, load4(f0 + row) + wab * h0);
-      store4(f1 + row, load4(f1 + row) + wab * h1);
-      store4(f2 + row, load4(f2 + row) + wab * h2);
-    }
+  for_each_row([&](double wab, std::size_t row) {
+    const std::size_t tail = row + nz - 4;
+    store4(f0 + tail, load4(f0 + tail) + wab * t0);
+    store4(f1 + tail, load4(f1 + tail) + wab * t1);
+    store4(f2 + tail, load4(f2 + tail) + wab * t2);
+    store4(f0 + row, load4(f0 + row) + wab * h0);
+    store4(f1 + row, load4(f1 + row) + wab * h1);
+    store4(f2 + row, load4(f2 + row) + wab * h2);
+  });
 }
+
+// The rows of node i of a block on the seam path (on_seam_path), from the block's weights.
+auto block_rows(const Peskin4Block& b, int i, int nx, int ny, int nz) {
+  return [&b, i, nx, ny, nz](auto&& add) {
+    std::size_t planes[4];
+    x_planes(b, i, nx, static_cast<std::size_t>(ny) * nz, planes);
+    const std::size_t y0 = static_cast<std::size_t>(b.first[1][i]) * nz;
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 4; ++c) add(b.w[0][a][i] * b.w[1][c][i], planes[a] + y0 + c * static_cast<std::size_t>(nz));
+  };
+}
+v4d block_wz(const Peskin4Block& b, int i) { return v4d{b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]}; }
+
+// The rows of a 4-point stencil with a weight (those beyond a wall have none).
+auto stencil_rows(const KernelStencil& s, int ny, int nz) {
+  return [&s, ny, nz](auto&& add) {
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const double wab = s.wx[a] * s.wy[b];
+        if (wab != 0.0) add(wab, lattice_index(s.x[a], s.y[b], 0, ny, nz));
+      }
+  };
+}
+v4d stencil_wz(const KernelStencil& s) { return v4d{s.wz[0], s.wz[1], s.wz[2], s.wz[3]}; }
 
 Vec3 interpolate_rows(const Peskin4Block& b, int i, const double* const u[3], int nx, int ny, int nz) {
   std::size_t planes[4];
@@ -288,56 +303,6 @@ Vec3 interpolate_rows(const Peskin4Block& b, int i, const double* const u[3], in
   const v4d wz = {b.w[2][0][i], b.w[2][1][i], b.w[2][2][i], b.w[2][3][i]};
   const v4d t0 = sum0 * wz, t1 = sum1 * wz, t2 = sum2 * wz;
   return Vec3((t0[0] + t0[1]) + (t0[2] + t0[3]), (t1[0] + t1[1]) + (t1[2] + t1[3]), (t2[0] + t2[1]) + (t2[2] + t2[3]));
-}
-
-// The interpolation over a support across the z seam (seam_tail(s, nz) == K, nz >= 4): the
-// sums of interpolate_field's whole rows, lane by lane.
-template <int K>
-Vec3 interpolate_seam(const KernelStencil& s, const double* const u[3], int ny, int nz) {
-  const double* const u0 = u[0];
-  const double* const u1 = u[1];
-  const double* const u2 = u[2];
-  v4d t0 = {}, t1 = {}, t2 = {}, h0 = {}, h1 = {}, h2 = {};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      const double wab = s.wx[a] * s.wy[b];
-      if (wab == 0.0) continue;
-      const std::size_t row = lattice_index(s.x[a], s.y[b], 0, ny, nz), tail = row + nz - 4;
-      t0 += wab * load4(u0 + tail);
-      t1 += wab * load4(u1 + tail);
-      t2 += wab * load4(u2 + tail);
-      h0 += wab * load4(u0 + row);
-      h1 += wab * load4(u1 + row);
-      h2 += wab * load4(u2 + row);
-    }
-  const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
-  const v4d v0 = support_lanes<K>(t0, h0) * wz, v1 = support_lanes<K>(t1, h1) * wz, v2 = support_lanes<K>(t2, h2) * wz;
-  return Vec3((v0[0] + v0[1]) + (v0[2] + v0[3]), (v1[0] + v1[1]) + (v1[2] + v1[3]), (v2[0] + v2[1]) + (v2[2] + v2[3]));
-}
-
-// The spreading of one node whose support lies across the z seam (seam_tail(s, nz) == K,
-// nz >= 8): spread_one's whole rows, lane by lane; the row's other lanes get + 0.0.
-template <int K>
-void spread_seam(const KernelStencil& s, const Vec3& force, double* const f[3], int ny, int nz) {
-  double* const f0 = f[0];
-  double* const f1 = f[1];
-  double* const f2 = f[2];
-  const v4d wz = {s.wz[0], s.wz[1], s.wz[2], s.wz[3]};
-  const v4d fz0 = wz * force[0], fz1 = wz * force[1], fz2 = wz * force[2];
-  const v4d t0 = tail_lanes<K>(fz0), t1 = tail_lanes<K>(fz1), t2 = tail_lanes<K>(fz2);
-  const v4d h0 = head_lanes<K>(fz0), h1 = head_lanes<K>(fz1), h2 = head_lanes<K>(fz2);
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
-      const double wab = s.wx[a] * s.wy[b];
-      if (wab == 0.0) continue;
-      const std::size_t row = lattice_index(s.x[a], s.y[b], 0, ny, nz), tail = row + nz - 4;
-      store4(f0 + tail, load4(f0 + tail) + wab * t0);
-      store4(f1 + tail, load4(f1 + tail) + wab * t1);
-      store4(f2 + tail, load4(f2 + tail) + wab * t2);
-      store4(f0 + row, load4(f0 + row) + wab * h0);
-      store4(f1 + row, load4(f1 + row) + wab * h1);
-      store4(f2 + row, load4(f2 + row) + wab * h2);
-    }
 }
 
 // Adds one node's force through its stencil.
@@ -364,9 +329,9 @@ void spread_one(const KernelStencil& s, const Vec3& force, double* const f[3], i
     return;
   }
   if (nz >= 8) switch (seam_tail(s, nz)) {
-      case 1: return spread_seam<1>(s, force, f, ny, nz);
-      case 2: return spread_seam<2>(s, force, f, ny, nz);
-      case 3: return spread_seam<3>(s, force, f, ny, nz);
+      case 1: return spread_row_ends<1>(stencil_rows(s, ny, nz), stencil_wz(s), force, f, nz);
+      case 2: return spread_row_ends<2>(stencil_rows(s, ny, nz), stencil_wz(s), force, f, nz);
+      case 3: return spread_row_ends<3>(stencil_rows(s, ny, nz), stencil_wz(s), force, f, nz);
       default: break;
     }
   for_each_stencil_node(s, ny, nz, [&](std::size_t node, double w) {
@@ -401,9 +366,9 @@ void spread_forces(const NodeOrder& order, FluidLattice& fluid) {
         if (!on_fast_path(block, i, nx, ny, nz)) {
           const Vec3& force = order.force[g0 + i];
           switch (on_seam_path(block, i, nx, ny, nz)) {
-            case 1: spread_seam_rows<1>(block, i, force, f, nx, ny, nz); break;
-            case 2: spread_seam_rows<2>(block, i, force, f, nx, ny, nz); break;
-            case 3: spread_seam_rows<3>(block, i, force, f, nx, ny, nz); break;
+            case 1: spread_row_ends<1>(block_rows(block, i, nx, ny, nz), block_wz(block, i), force, f, nz); break;
+            case 2: spread_row_ends<2>(block_rows(block, i, nx, ny, nz), block_wz(block, i), force, f, nz); break;
+            case 3: spread_row_ends<3>(block_rows(block, i, nx, ny, nz), block_wz(block, i), force, f, nz); break;
             default: spread_one(edge_stencil(block, i, order, g0 + i), force, f, ny, nz);
           }
           ++i;
@@ -458,9 +423,9 @@ Vec3 interpolate_field(const KernelStencil& s, const double* const u[3], int ny,
     return out;
   }
   if (nz >= 4) switch (seam_tail(s, nz)) {
-      case 1: return interpolate_seam<1>(s, u, ny, nz);
-      case 2: return interpolate_seam<2>(s, u, ny, nz);
-      case 3: return interpolate_seam<3>(s, u, ny, nz);
+      case 1: return interpolate_row_ends<1>(stencil_rows(s, ny, nz), stencil_wz(s), u, nz);
+      case 2: return interpolate_row_ends<2>(stencil_rows(s, ny, nz), stencil_wz(s), u, nz);
+      case 3: return interpolate_row_ends<3>(stencil_rows(s, ny, nz), stencil_wz(s), u, nz);
       default: break;
     }
   return interpolate(s, [&](int i, int j, int k) {
@@ -487,9 +452,9 @@ void interpolate_sorted(const NodeOrder& order, std::size_t begin, std::size_t e
         continue;
       }
       switch (on_seam_path(block, i, nx, ny, nz)) {
-        case 1: at = interpolate_seam_rows<1>(block, i, u, nx, ny, nz); break;
-        case 2: at = interpolate_seam_rows<2>(block, i, u, nx, ny, nz); break;
-        case 3: at = interpolate_seam_rows<3>(block, i, u, nx, ny, nz); break;
+        case 1: at = interpolate_row_ends<1>(block_rows(block, i, nx, ny, nz), block_wz(block, i), u, nz); break;
+        case 2: at = interpolate_row_ends<2>(block_rows(block, i, nx, ny, nz), block_wz(block, i), u, nz); break;
+        case 3: at = interpolate_row_ends<3>(block_rows(block, i, nx, ny, nz), block_wz(block, i), u, nz); break;
         default: at = interpolate_field(edge_stencil(block, i, order, g0 + i), u, ny, nz);
       }
     }
