@@ -15,13 +15,10 @@ namespace rbcal::bench {
 
 CouplingKernelTimings time_coupling_kernels(solver::KernelKind kernel, const std::vector<std::vector<solver::Vec3>>& positions,
                                             const std::vector<std::vector<solver::Vec3>>& forces,
-                                            const solver::FluidConfig& lattice, int passes) {
+                                            solver::FluidLattice& fluid, int passes) {
   if (passes < 1) throw std::invalid_argument("coupling-kernel bench: passes must be >= 1");
-  solver::FluidConfig config = lattice;
-  config.single_precision = false;
-  solver::FluidLattice fluid(config);
   solver::NodeOrder order;
-  solver::order_nodes(kernel, positions, forces, config.nx, config.ny, config.nz, order);
+  solver::order_nodes(kernel, positions, forces, fluid.nx(), fluid.ny(), fluid.nz(), order);
   const std::size_t total = order.nodes.size();
   if (total == 0) throw std::invalid_argument("coupling-kernel bench: the case has no membrane nodes");
   // A velocity field laid out as the solver's (components a staggered stride apart).

@@ -22,12 +22,12 @@ struct CouplingKernelTimings {
   double interpolation_median = 0, interpolation_fastest = 0;
 };
 
-// `passes` alternating passes of the sorted nodes' spreading (the force field cleared before
-// each, untimed) and interpolation (of a smooth made-up field), on one thread, on a lattice
-// of `lattice`'s size. The nodes are sorted and gathered once, as the solver does at an
-// inside-fraction build.
+// `passes` alternating passes of the sorted nodes' spreading into `lattice`'s force field
+// (cleared before each, untimed; the caller's lattice, whose force field this overwrites)
+// and interpolation (of a smooth made-up field of its size), on one thread. The nodes are
+// sorted and gathered once, as the solver does at an inside-fraction build.
 CouplingKernelTimings time_coupling_kernels(solver::KernelKind kernel, const std::vector<std::vector<solver::Vec3>>& positions,
                                             const std::vector<std::vector<solver::Vec3>>& forces,
-                                            const solver::FluidConfig& lattice, int passes);
+                                            solver::FluidLattice& lattice, int passes);
 
 }  // namespace rbcal::bench

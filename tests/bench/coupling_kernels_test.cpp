@@ -27,7 +27,8 @@ TEST(CouplingKernels, TimesEveryNodeOnOneThreadAndRestoresTheThreads) {
       force[c].emplace_back(f(rng), f(rng), f(rng));
     }
   const int threads = omp_get_max_threads();
-  const CouplingKernelTimings t = time_coupling_kernels(solver::KernelKind::Peskin4, x, force, lattice, 5);
+  solver::FluidLattice fluid(lattice);
+  const CouplingKernelTimings t = time_coupling_kernels(solver::KernelKind::Peskin4, x, force, fluid, 5);
   EXPECT_EQ(omp_get_max_threads(), threads);
   EXPECT_EQ(t.nodes, 350u);
   EXPECT_EQ(t.passes, 5);
@@ -40,10 +41,11 @@ TEST(CouplingKernels, TimesEveryNodeOnOneThreadAndRestoresTheThreads) {
 TEST(CouplingKernels, RefusesNoPassesAndNoNodes) {
   solver::FluidConfig lattice;
   lattice.nx = lattice.ny = lattice.nz = 8;
+  solver::FluidLattice fluid(lattice);
   const std::vector<std::vector<Vec3>> one = {{Vec3(3.5, 3.5, 3.5)}};
-  EXPECT_THROW(time_coupling_kernels(solver::KernelKind::Peskin4, one, one, lattice, 0), std::invalid_argument);
+  EXPECT_THROW(time_coupling_kernels(solver::KernelKind::Peskin4, one, one, fluid, 0), std::invalid_argument);
   const std::vector<std::vector<Vec3>> none = {{}};
-  EXPECT_THROW(time_coupling_kernels(solver::KernelKind::Peskin4, none, none, lattice, 3), std::invalid_argument);
+  EXPECT_THROW(time_coupling_kernels(solver::KernelKind::Peskin4, none, none, fluid, 3), std::invalid_argument);
 }
 
 }  // namespace
